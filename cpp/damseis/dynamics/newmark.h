@@ -1,0 +1,69 @@
+// Implicit time integration of linear structural dynamics,
+//   M a + C v + K u = f(t),   C = a_M M + b_K K (Rayleigh),
+// by the HHT-alpha method (alpha = 0: Newmark average acceleration). The
+// effective matrix is factorised once and reused at every step.
+#pragma once
+
+#include <damseis/fem/direct_solver.h>
+#include <memory>
+#include <petscmat.h>
+#include <string>
+
+namespace damseis::dynamics
+{
+/// Rayleigh damping C = a_mass M + b_stiffness K.
+struct RayleighDamping
+{
+  double a_mass = 0.0;      ///< [1/s]
+  double b_stiffness = 0.0; ///< [s]
+  /// Damping ratio `zeta` at the two frequencies f1, f2 [Hz] (f1 != f2).
+  static RayleighDamping from_ratio(double zeta, double f1_hz, double f2_hz);
+  /// Damping ratio this damping gives at frequency f [Hz].
+  double ratio_at(double f_hz) const;
+};
+
+/// HHT-alpha parameters; alpha in [-1/3, 0].
+struct TimeScheme
+{
+  double dt = 0.01;   ///< time step [s]
+  double alpha = 0.0; ///< 0: Newmark average acceleration (beta 1/4, gamma 1/2)
+  double beta() const { return 0.25 * (1.0 - alpha) * (1.0 - alpha); }
+  double gamma() const { return 0.5 - alpha; }
+};
+
+/// The integrator. State vectors have the layout of K's columns.
+class LinearNewmark
+{
+public:
+  /// M and K must stay alive while the integrator is used. Fixed dofs are
+  /// expected as identity rows of K and zero rows of M with a zero load.
+  LinearNewmark(
+      Mat M, Mat K, RayleighDamping damping, TimeScheme scheme,
+      fem::Factorization factorization = fem::Factorization::automatic);
+  ~LinearNewmark();
+  LinearNewmark(const LinearNewmark&) = delete;
+  LinearNewmark& operator=(const LinearNewmark&) = delete;
+
+  /// Sets the state at the current time: displacement, velocity,
+  /// acceleration and load (all copied).
+  void set_state(Vec u, Vec v, Vec a, Vec f);
+  /// Advances one step to the load f_next = f(t + dt).
+  void step(Vec f_next);
+
+  Vec u() const { return _u; }
+  Vec v() const { return _v; }
+  Vec a() const { return _a; }
+  const TimeScheme& scheme() const { return _scheme; }
+  const fem::DirectSolver& solver() const { return *_solver; }
+
+private:
+  Mat _M, _K;
+  RayleighDamping _damping;
+  TimeScheme _scheme;
+  Mat _Keff = nullptr;
+  std::unique_ptr<fem::DirectSolver> _solver;
+  Vec _u = nullptr, _v = nullptr, _a = nullptr, _f = nullptr;
+  Vec _x1 = nullptr, _x2 = nullptr, _w = nullptr, _rhs = nullptr,
+      _u_next = nullptr;
+};
+} // namespace damseis::dynamics

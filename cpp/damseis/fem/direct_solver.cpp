@@ -1,0 +1,99 @@
+#include "direct_solver.h"
+#include <chrono>
+#include <stdexcept>
+
+namespace damseis::fem
+{
+Factorization parse_factorization(const std::string& name)
+{
+  if (name == "auto")
+    return Factorization::automatic;
+  if (name == "petsc")
+    return Factorization::petsc;
+  if (name == "mumps")
+    return Factorization::mumps;
+  if (name == "cholmod")
+    return Factorization::cholmod;
+  throw std::invalid_argument("unknown factorisation \"" + name +
+                              "\"; expected auto, petsc, mumps or cholmod");
+}
+
+DirectSolver::DirectSolver(MPI_Comm comm, Factorization kind) : _kind(kind)
+{
+  int size = 1;
+  MPI_Comm_size(comm, &size);
+  if (_kind == Factorization::automatic)
+    _kind = size == 1 ? Factorization::petsc : Factorization::mumps;
+  if (size > 1 && _kind != Factorization::mumps)
+  {
+    throw std::invalid_argument(
+        "the " + name() +
+        " factorisation is serial; use solver.factorization = \"mumps\" or "
+        "\"auto\" with MPI");
+  }
+  KSPCreate(comm, &_ksp);
+  KSPSetType(_ksp, KSPPREONLY);
+  PC pc;
+  KSPGetPC(_ksp, &pc);
+  PCSetType(pc, PCCHOLESKY);
+  switch (_kind)
+  {
+  case Factorization::petsc:
+    PCFactorSetMatSolverType(pc, MATSOLVERPETSC);
+    PCFactorSetMatOrderingType(pc, MATORDERINGND);
+    break;
+  case Factorization::cholmod:
+    PCFactorSetMatSolverType(pc, MATSOLVERCHOLMOD);
+    break;
+  default:
+    PCFactorSetMatSolverType(pc, MATSOLVERMUMPS);
+    break;
+  }
+}
+
+DirectSolver::~DirectSolver()
+{
+  if (_ksp)
+    KSPDestroy(&_ksp);
+}
+
+void DirectSolver::factorize(Mat A)
+{
+  MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE);
+  MatSetOption(A, MAT_SPD, PETSC_TRUE);
+  const auto t0 = std::chrono::steady_clock::now();
+  KSPSetOperators(_ksp, A, A);
+  KSPSetUp(_ksp);
+  _factor_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
+          .count();
+}
+
+void DirectSolver::solve(Vec b, Vec x) const
+{
+  KSPSolve(_ksp, b, x);
+  KSPConvergedReason reason;
+  KSPGetConvergedReason(_ksp, &reason);
+  if (reason < 0)
+  {
+    throw std::runtime_error("direct solve failed (" + name() +
+                             "): PETSc reason " +
+                             std::to_string(static_cast<int>(reason)));
+  }
+}
+
+std::string DirectSolver::name() const
+{
+  switch (_kind)
+  {
+  case Factorization::petsc:
+    return "petsc-cholesky-nd";
+  case Factorization::cholmod:
+    return "cholmod-cholesky";
+  case Factorization::mumps:
+    return "mumps-cholesky";
+  default:
+    return "auto";
+  }
+}
+} // namespace damseis::fem

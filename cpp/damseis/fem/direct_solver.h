@@ -1,0 +1,48 @@
+// Sparse Cholesky factorisation of a symmetric positive definite matrix,
+// factorised once and reused for many right-hand sides.
+#pragma once
+
+#include <mpi.h>
+#include <petscksp.h>
+#include <string>
+
+namespace damseis::fem
+{
+/// The factorisations PETSc offers here (bench/ compares them).
+enum class Factorization
+{
+  automatic, ///< PETSc's own Cholesky (nested dissection) serial, else MUMPS
+  petsc,     ///< PETSc's own Cholesky with nested-dissection ordering (serial)
+  mumps,     ///< MUMPS Cholesky (serial or parallel)
+  cholmod,   ///< SuiteSparse CHOLMOD (serial)
+};
+
+/// Parses "auto", "petsc", "mumps" or "cholmod"; throws
+/// std::invalid_argument otherwise.
+Factorization parse_factorization(const std::string& name);
+
+/// A KSP in "preonly" mode with a Cholesky preconditioner.
+class DirectSolver
+{
+public:
+  DirectSolver(MPI_Comm comm, Factorization kind = Factorization::automatic);
+  ~DirectSolver();
+  DirectSolver(const DirectSolver&) = delete;
+  DirectSolver& operator=(const DirectSolver&) = delete;
+
+  /// Factorises A (marked symmetric positive definite). A must outlive the
+  /// solver's use of it.
+  void factorize(Mat A);
+  /// Solves A x = b with the stored factors.
+  void solve(Vec b, Vec x) const;
+  /// Name of the factorisation used, e.g. "petsc-cholesky-nd".
+  std::string name() const;
+  /// Wall time of the last factorize() [s].
+  double factor_seconds() const { return _factor_seconds; }
+
+private:
+  KSP _ksp = nullptr;
+  Factorization _kind;
+  double _factor_seconds = 0.0;
+};
+} // namespace damseis::fem

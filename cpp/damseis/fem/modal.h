@@ -1,0 +1,27 @@
+// Natural frequencies and mode shapes: K phi = omega^2 M phi (SLEPc).
+#pragma once
+
+#include <petscmat.h>
+#include <vector>
+
+namespace damseis::fem
+{
+/// Result of a modal analysis; the mode vectors are owned by this object.
+struct Modes
+{
+  std::vector<double> frequencies_hz; ///< ascending
+  std::vector<Vec> shapes;            ///< M-normalised mode shapes
+  Modes() = default;
+  Modes(Modes&& other) noexcept;
+  Modes& operator=(Modes&& other) noexcept;
+  Modes(const Modes&) = delete;
+  Modes& operator=(const Modes&) = delete;
+  ~Modes();
+};
+
+/// The `count` lowest modes of K phi = omega^2 M phi by shift-and-invert
+/// around 0 (Krylov-Schur). Fixed dofs (identity rows of K, zero rows of M)
+/// and massless parts give infinite eigenvalues, which are never returned.
+/// Collective. Throws std::runtime_error if fewer than `count` converge.
+Modes solve_modes(Mat K, Mat M, int count);
+} // namespace damseis::fem

@@ -1,0 +1,281 @@
+// 2D gravity-dam section (with an optional foundation block), built and
+// meshed with gmsh and distributed as a DOLFINx mesh.
+#include "gravity_dam.h"
+#include "tags.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <gmsh.h>
+
+namespace damseis::geometry
+{
+namespace
+{
+/// Throws std::invalid_argument("GravityDamSection: " + what) unless `ok`.
+void require(bool ok, const std::string& what)
+{
+  if (!ok)
+    throw std::invalid_argument("GravityDamSection: " + what);
+}
+
+/// Formats a number for error messages.
+std::string str(double v)
+{
+  std::ostringstream os;
+  os.precision(10);
+  os << v;
+  return os.str();
+}
+
+/// Checks that the dam polygon heel-toe-neck-crest corners is a simple,
+/// counter-clockwise polygon (y-monotone: vertical upstream face on the
+/// left, downstream polyline strictly to its right).
+void validate_polygon(const GravityDamSection& s)
+{
+  for (double v : {s.heel_x, s.toe_x, s.base_y, s.neck_x, s.neck_y,
+                   s.crest_down_x, s.crest_y, s.water_level})
+    require(std::isfinite(v), "all coordinates must be finite");
+  require(s.toe_x > s.heel_x, "toe_x (" + str(s.toe_x) +
+                                  ") must be greater than heel_x (" +
+                                  str(s.heel_x) + ")");
+  require(s.neck_y > s.base_y, "neck_y (" + str(s.neck_y) +
+                                   ") must be above base_y (" + str(s.base_y) +
+                                   ")");
+  require(s.crest_y > s.neck_y,
+          "crest_y (" + str(s.crest_y) +
+              ") must be above the neck (neck_y = " + str(s.neck_y) + ")");
+  require(s.neck_x > s.heel_x, "neck_x (" + str(s.neck_x) +
+                                   ") must be downstream of heel_x (" +
+                                   str(s.heel_x) + ")");
+  require(s.crest_down_x > s.heel_x, "crest_down_x (" + str(s.crest_down_x) +
+                                         ") must be downstream of heel_x (" +
+                                         str(s.heel_x) +
+                                         "): the crest width must be positive");
+}
+
+/// Checks the whole section: polygon, mesh sizes and foundation.
+void validate(const GravityDamSection& s)
+{
+  validate_polygon(s);
+  require(std::isfinite(s.mesh_size) and s.mesh_size > 0,
+          "mesh_size must be positive, got " + str(s.mesh_size));
+  if (s.foundation)
+  {
+    const double base = s.toe_x - s.heel_x;
+    require(std::isfinite(s.foundation_width) and s.foundation_width > base,
+            "foundation_width (" + str(s.foundation_width) +
+                ") must exceed the dam base width (" + str(base) + ")");
+    require(std::isfinite(s.foundation_depth) and s.foundation_depth > 0,
+            "foundation_depth must be positive, got " +
+                str(s.foundation_depth));
+    require(std::isfinite(s.foundation_mesh_size) and
+                s.foundation_mesh_size >= 0,
+            "foundation_mesh_size must be >= 0 (0 -> 2.5 x mesh_size), got " +
+                str(s.foundation_mesh_size));
+  }
+}
+
+/// Initialises gmsh on construction and finalises it on destruction.
+class GmshSession
+{
+public:
+  explicit GmshSession(bool verbose)
+  {
+    gmsh::initialize(0, nullptr, false);
+    gmsh::option::setNumber("General.Terminal", verbose ? 1 : 0);
+    gmsh::option::setNumber("General.Verbosity", verbose ? 5 : 0);
+  }
+  GmshSession(const GmshSession&) = delete;
+  GmshSession& operator=(const GmshSession&) = delete;
+  ~GmshSession() { gmsh::finalize(); }
+};
+
+/// Builds the geometry (built-in kernel, shared curves), the physical
+/// groups and the size fields, and meshes with linear triangles.
+void build_and_mesh(const GravityDamSection& s)
+{
+  namespace geo = gmsh::model::geo;
+  gmsh::model::add("gravity_dam");
+  const double lc = s.mesh_size;
+
+  // Dam polygon, counter-clockwise
+  const int heel = geo::addPoint(s.heel_x, s.base_y, 0, lc);
+  const int toe = geo::addPoint(s.toe_x, s.base_y, 0, lc);
+  const int neck = geo::addPoint(s.neck_x, s.neck_y, 0, lc);
+  const int crest_down = geo::addPoint(s.crest_down_x, s.crest_y, 0, lc);
+  const int crest_up = geo::addPoint(s.heel_x, s.crest_y, 0, lc);
+
+  const int base = geo::addLine(heel, toe);
+  const int down1 = geo::addLine(toe, neck);
+  const int down2 = geo::addLine(neck, crest_down);
+  const int crest = geo::addLine(crest_down, crest_up);
+  std::vector<int> upstream;
+  if (s.water_level > s.base_y and s.water_level < s.crest_y)
+  {
+    const int water = geo::addPoint(s.heel_x, s.water_level, 0, lc);
+    upstream = {geo::addLine(crest_up, water), geo::addLine(water, heel)};
+  }
+  else
+    upstream = {geo::addLine(crest_up, heel)};
+
+  std::vector<int> dam_loop = {base, down1, down2, crest};
+  dam_loop.insert(dam_loop.end(), upstream.begin(), upstream.end());
+  const int dam =
+      geo::addPlaneSurface({geo::addCurveLoop(dam_loop, -1, false)});
+
+  // Foundation block below the dam, sharing the base curve
+  int foundation = -1;
+  int bottom = -1, left = -1, right = -1, floor = -1, top_down = -1;
+  double lc_far = lc;
+  if (s.foundation)
+  {
+    lc_far = s.foundation_mesh_size > 0 ? s.foundation_mesh_size : 2.5 * lc;
+    const double xc = 0.5 * (s.heel_x + s.toe_x);
+    const double xl = xc - 0.5 * s.foundation_width;
+    const double xr = xc + 0.5 * s.foundation_width;
+    const double yb = s.base_y - s.foundation_depth;
+    const int bl = geo::addPoint(xl, yb, 0, lc_far);
+    const int br = geo::addPoint(xr, yb, 0, lc_far);
+    const int tr = geo::addPoint(xr, s.base_y, 0, lc_far);
+    const int tl = geo::addPoint(xl, s.base_y, 0, lc_far);
+    bottom = geo::addLine(bl, br);
+    right = geo::addLine(br, tr);
+    top_down = geo::addLine(tr, toe);
+    floor = geo::addLine(heel, tl);
+    left = geo::addLine(tl, bl);
+    foundation = geo::addPlaneSurface({geo::addCurveLoop(
+        {bottom, right, top_down, -base, floor, left}, -1, false)});
+  }
+  geo::synchronize();
+
+  // Physical groups (tags.h)
+  gmsh::model::addPhysicalGroup(2, {dam}, tags::dam);
+  gmsh::model::addPhysicalGroup(1, upstream, tags::upstream_face);
+  gmsh::model::addPhysicalGroup(1, {down1, down2}, tags::downstream_face);
+  gmsh::model::addPhysicalGroup(1, {crest}, tags::crest);
+  gmsh::model::addPhysicalGroup(1, {base}, tags::dam_base);
+  if (s.foundation)
+  {
+    gmsh::model::addPhysicalGroup(2, {foundation}, tags::foundation);
+    gmsh::model::addPhysicalGroup(1, {bottom}, tags::foundation_bottom);
+    gmsh::model::addPhysicalGroup(1, {left, right}, tags::foundation_sides);
+    gmsh::model::addPhysicalGroup(1, {floor}, tags::reservoir_floor);
+    gmsh::model::addPhysicalGroup(1, {top_down},
+                                  tags::foundation_top_downstream);
+  }
+
+  gmsh::option::setNumber("Mesh.Algorithm", 6);
+  gmsh::option::setNumber("Mesh.ElementOrder", 1);
+  gmsh::option::setNumber("Mesh.RecombineAll", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+  if (!s.foundation)
+  {
+    // Uniform size from the points
+    gmsh::option::setNumber("Mesh.MeshSizeMax", lc);
+  }
+  else
+  {
+    // Size field: min(lc in the dam (surface and its curves),
+    // threshold on the distance to the base: lc -> lc_far)
+    namespace field = gmsh::model::mesh::field;
+    gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+    gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+    gmsh::option::setNumber("Mesh.MeshSizeMax", std::max(lc, lc_far));
+
+    const double base_len = s.toe_x - s.heel_x;
+    const int distance = field::add("Distance");
+    field::setNumbers(distance, "CurvesList", {double(base)});
+    field::setNumber(distance, "NumPointsPerCurve",
+                     std::max(20.0, std::ceil(4 * base_len / lc)));
+
+    // Grade with a size increase of 0.2 m per metre of distance
+    const int threshold = field::add("Threshold");
+    field::setNumber(threshold, "InField", distance);
+    field::setNumber(threshold, "SizeMin", lc);
+    field::setNumber(threshold, "SizeMax", lc_far);
+    field::setNumber(threshold, "DistMin", lc);
+    field::setNumber(threshold, "DistMax",
+                     lc + std::max(5 * std::abs(lc_far - lc), lc));
+
+    std::ostringstream expr;
+    expr.precision(17);
+    expr << lc;
+    const int constant = field::add("MathEval");
+    field::setString(constant, "F", expr.str());
+    const int in_dam = field::add("Restrict");
+    field::setNumber(in_dam, "InField", constant);
+    field::setNumbers(in_dam, "FacesList", {double(dam)});
+    std::vector<double> dam_edges(dam_loop.begin(), dam_loop.end());
+    field::setNumbers(in_dam, "EdgesList", dam_edges);
+
+    const int min = field::add("Min");
+    field::setNumbers(min, "FieldsList", {double(threshold), double(in_dam)});
+    field::setAsBackgroundMesh(min);
+  }
+
+  gmsh::model::mesh::generate(2);
+}
+} // namespace
+
+//-----------------------------------------------------------------------------
+double section_area(const GravityDamSection& s)
+{
+  validate_polygon(s);
+  const double px[5] = {s.heel_x, s.toe_x, s.neck_x, s.crest_down_x, s.heel_x};
+  const double py[5] = {s.base_y, s.base_y, s.neck_y, s.crest_y, s.crest_y};
+  double twice = 0;
+  for (int i = 0; i < 5; ++i)
+  {
+    const int j = (i + 1) % 5;
+    twice += px[i] * py[j] - px[j] * py[i];
+  }
+  return 0.5 * twice;
+}
+//-----------------------------------------------------------------------------
+Model build_gravity_dam(MPI_Comm comm, const GravityDamSection& s, bool verbose)
+{
+  // Deterministic, so every rank throws the same error
+  validate(s);
+
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  std::optional<GmshSession> session;
+  int ok = 1;
+  std::string message;
+  if (rank == 0)
+  {
+    try
+    {
+      session.emplace(verbose);
+      build_and_mesh(s);
+    }
+    catch (const std::exception& e)
+    {
+      ok = 0;
+      message = e.what();
+    }
+    catch (...)
+    {
+      ok = 0;
+      message = "unknown gmsh error";
+    }
+  }
+  MPI_Bcast(&ok, 1, MPI_INT, 0, comm);
+  if (!ok)
+  {
+    int len = static_cast<int>(message.size());
+    MPI_Bcast(&len, 1, MPI_INT, 0, comm);
+    message.resize(len);
+    MPI_Bcast(message.data(), len, MPI_CHAR, 0, comm);
+    throw std::runtime_error("build_gravity_dam: gmsh failed: " + message);
+  }
+  // gmsh stays open on rank 0 until the conversion is done
+  return model_from_gmsh(comm, 2);
+}
+} // namespace damseis::geometry

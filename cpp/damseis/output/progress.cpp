@@ -1,0 +1,51 @@
+#include "progress.h"
+#include <cstdio>
+#include <dolfinx/common/log.h>
+
+namespace damseis::output
+{
+Progress::Progress(MPI_Comm comm, int total, double interval)
+    : _total(total), _interval(interval),
+      _start(std::chrono::steady_clock::now())
+{
+  MPI_Comm_rank(comm, &_rank);
+}
+
+double Progress::elapsed() const
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                       _start)
+      .count();
+}
+
+void Progress::report(int step, double t, const std::string& extra)
+{
+  if (_rank != 0)
+    return;
+  const double now = elapsed();
+  if (now - _last < _interval && step != _total)
+    return;
+  _last = now;
+  const double eta = step > 0 ? now / step * (_total - step) : 0.0;
+  std::printf("step %6d/%d  t = %8.3f s  elapsed %7.1f s  ETA %7.1f s%s%s\n",
+              step, _total, t, now, eta, extra.empty() ? "" : "  ",
+              extra.c_str());
+  std::fflush(stdout);
+}
+
+void quiet_library_logging()
+{
+  loguru::g_stderr_verbosity = loguru::Verbosity_WARNING;
+}
+
+void print(MPI_Comm comm, const std::string& line)
+{
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  if (rank == 0)
+  {
+    std::printf("%s\n", line.c_str());
+    std::fflush(stdout);
+  }
+}
+} // namespace damseis::output

@@ -1,0 +1,32 @@
+// Progress lines for long runs (rank 0): step, time, elapsed, ETA.
+#pragma once
+
+#include <chrono>
+#include <mpi.h>
+#include <string>
+
+namespace damseis::output
+{
+class Progress
+{
+public:
+  /// @param[in] total number of steps; @param[in] interval seconds between
+  /// lines (the last step is always reported).
+  Progress(MPI_Comm comm, int total, double interval = 2.0);
+  /// Reports step `step` (1-based) at time t; `extra` is appended.
+  void report(int step, double t, const std::string& extra = "");
+  /// Seconds since construction.
+  double elapsed() const;
+
+private:
+  int _rank = 0, _total;
+  double _interval, _last = -1e300;
+  std::chrono::steady_clock::time_point _start;
+};
+
+/// Silences DOLFINx's INFO log lines (warnings and errors still show).
+void quiet_library_logging();
+
+/// Prints a line on rank 0 only.
+void print(MPI_Comm comm, const std::string& line);
+} // namespace damseis::output

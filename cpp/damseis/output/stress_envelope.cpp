@@ -1,0 +1,95 @@
+#include "stress_envelope.h"
+#include "principal.h"
+#include <dolfinx/common/IndexMap.h>
+#include <dolfinx/fem/DofMap.h>
+#include <limits>
+
+namespace damseis::output
+{
+StressEnvelope::StressEnvelope(const dolfinx::fem::FunctionSpace& S,
+                               std::span<const std::int32_t> region_cells)
+{
+  const auto& dofmap = *S.dofmap();
+  _ncomp = dofmap.index_map_bs();
+  const std::int32_t n = dofmap.index_map->size_local();
+  _max.assign(n, -std::numeric_limits<double>::infinity());
+  _min.assign(n, std::numeric_limits<double>::infinity());
+  _t_max.assign(n, 0.0);
+  _t_min.assign(n, 0.0);
+  const std::vector<double> x = S.tabulate_dof_coordinates(false);
+  _x.resize(n);
+  for (std::int32_t i = 0; i < n; ++i)
+    _x[i] = {x[3 * i], x[3 * i + 1], x[3 * i + 2]};
+  _in_region.assign(n, region_cells.empty() ? 1 : 0);
+  for (std::int32_t c : region_cells)
+  {
+    for (std::int32_t d : dofmap.cell_dofs(c))
+    {
+      if (d < n)
+        _in_region[d] = 1;
+    }
+  }
+}
+
+void StressEnvelope::update(std::span<const double> s, double t)
+{
+  const std::size_t n = _max.size();
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const auto [p1, p3] = principal_extremes(s.data() + i * _ncomp, _ncomp);
+    if (p1 > _max[i])
+    {
+      _max[i] = p1;
+      _t_max[i] = t;
+    }
+    if (p3 < _min[i])
+    {
+      _min[i] = p3;
+      _t_min[i] = t;
+    }
+  }
+}
+
+namespace
+{
+/// The extreme of `v` (largest if `sign` = 1, smallest if -1) over the
+/// region points of all ranks, with its location and time.
+Extreme global_extreme(MPI_Comm comm, const std::vector<double>& v,
+                       const std::vector<double>& t,
+                       const std::vector<std::array<double, 3>>& x,
+                       const std::vector<std::int8_t>& in_region, double sign)
+{
+  struct
+  {
+    double value;
+    int rank;
+  } local{-std::numeric_limits<double>::infinity(), 0}, global;
+  MPI_Comm_rank(comm, &local.rank);
+  std::size_t best = 0;
+  for (std::size_t i = 0; i < v.size(); ++i)
+  {
+    if (in_region[i] && sign * v[i] > local.value)
+    {
+      local.value = sign * v[i];
+      best = i;
+    }
+  }
+  MPI_Allreduce(&local, &global, 1, MPI_DOUBLE_INT, MPI_MAXLOC, comm);
+  std::array<double, 5> data = {0, 0, 0, 0, 0};
+  if (global.rank == local.rank && !v.empty())
+    data = {v[best], x[best][0], x[best][1], x[best][2], t[best]};
+  MPI_Bcast(data.data(), 5, MPI_DOUBLE, global.rank, comm);
+  return {data[0], {data[1], data[2], data[3]}, data[4]};
+}
+} // namespace
+
+Extreme StressEnvelope::max_tension(MPI_Comm comm) const
+{
+  return global_extreme(comm, _max, _t_max, _x, _in_region, 1.0);
+}
+
+Extreme StressEnvelope::max_compression(MPI_Comm comm) const
+{
+  return global_extreme(comm, _min, _t_min, _x, _in_region, -1.0);
+}
+} // namespace damseis::output

@@ -1,0 +1,52 @@
+// Envelopes over time of the largest and smallest principal stress at every
+// stress point of the model.
+#pragma once
+
+#include <array>
+#include <dolfinx/fem/FunctionSpace.h>
+#include <mpi.h>
+#include <span>
+#include <vector>
+
+namespace damseis::output
+{
+/// A value with where and when it occurred.
+struct Extreme
+{
+  double value = 0.0;
+  std::array<double, 3> x = {0, 0, 0};
+  double t = 0.0;
+};
+
+/// Tracks, per owned stress point, the maximum of the largest principal
+/// stress (tension) and the minimum of the smallest (compression), with the
+/// times they occurred.
+class StressEnvelope
+{
+public:
+  /// @param[in] S stress-point space (blocked by the number of components)
+  /// @param[in] region_cells optional list of local cells to restrict the
+  /// extremes to (e.g. the dam); empty means every cell.
+  StressEnvelope(const dolfinx::fem::FunctionSpace& S,
+                 std::span<const std::int32_t> region_cells = {});
+
+  /// Updates with the owned stress values `s` (layout of S, owned part).
+  void update(std::span<const double> s, double t);
+
+  /// Extreme tension (largest max principal) over the region; collective.
+  Extreme max_tension(MPI_Comm comm) const;
+  /// Extreme compression (most negative min principal); collective.
+  Extreme max_compression(MPI_Comm comm) const;
+
+  /// Per owned point: envelope values and the times they occurred.
+  std::span<const double> max_principal() const { return _max; }
+  std::span<const double> min_principal() const { return _min; }
+  int components() const { return _ncomp; }
+
+private:
+  int _ncomp;
+  std::vector<double> _max, _min, _t_max, _t_min;
+  std::vector<std::array<double, 3>> _x;
+  std::vector<std::int8_t> _in_region;
+};
+} // namespace damseis::output
