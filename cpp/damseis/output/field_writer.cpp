@@ -1,6 +1,7 @@
 #include "field_writer.h"
 #include "principal.h"
 #include <algorithm>
+#include <cmath>
 #include <dolfinx/common/IndexMap.h>
 #include <dolfinx/fem/DofMap.h>
 #include <dolfinx/mesh/Mesh.h>
@@ -160,8 +161,17 @@ void write_envelopes(fem::ElasticModel& model, const StressEnvelope& env,
   }
   vmax.x()->scatter_rev([](double a, double b) { return std::max(a, b); });
   vmin.x()->scatter_rev([](double a, double b) { return std::min(a, b); });
+  // Points outside the tracked region are written as NaN (blank in
+  // ParaView).
   for (Function* f : {&cmax, &cmin, &vmax, &vmin})
+  {
+    for (double& v : f->x()->mutable_array())
+    {
+      if (std::isinf(v))
+        v = std::numeric_limits<double>::quiet_NaN();
+    }
     f->x()->scatter_fwd();
+  }
   dolfinx::io::XDMFFile xdmf(mesh->comm(), file, "w");
   xdmf.write_mesh(*mesh);
   for (Function* f : {&cmax, &cmin, &vmax, &vmin})

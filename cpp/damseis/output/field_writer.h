@@ -36,7 +36,7 @@ private:
 
 /// Writes the envelopes as cell fields (largest value over the cell's
 /// points) and vertex fields (largest over the points at the vertex), plus
-/// the times at which the cell extremes occurred. Values in Pa.
+/// Values in Pa; NaN outside the envelope's region.
 void write_envelopes(fem::ElasticModel& model, const StressEnvelope& env,
                      const std::filesystem::path& file);
 } // namespace damseis::output

@@ -36,6 +36,8 @@ void StressEnvelope::update(std::span<const double> s, double t)
   const std::size_t n = _max.size();
   for (std::size_t i = 0; i < n; ++i)
   {
+    if (!_in_region[i])
+      continue;
     const auto [p1, p3] = principal_extremes(s.data() + i * _ncomp, _ncomp);
     if (p1 > _max[i])
     {

@@ -38,7 +38,7 @@ public:
   /// Extreme compression (most negative min principal); collective.
   Extreme max_compression(MPI_Comm comm) const;
 
-  /// Per owned point: envelope values and the times they occurred.
+  /// Per owned point: envelope values (+-infinity outside the region).
   std::span<const double> max_principal() const { return _max; }
   std::span<const double> min_principal() const { return _min; }
   int components() const { return _ncomp; }

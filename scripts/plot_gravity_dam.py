@@ -1,0 +1,92 @@
+#!/usr/bin/python3
+"""Plots of a gravity-dam analysis (koyna demo): crest displacement history
+and contour maps of the principal-stress envelopes on the section.
+
+Usage: plot_gravity_dam.py OUT_DIR
+Reads OUT_DIR/crest.csv, OUT_DIR/envelopes.h5 and OUT_DIR/summary.json;
+writes OUT_DIR/crest_history.png and OUT_DIR/envelopes.png.
+"""
+import json
+import sys
+from pathlib import Path
+
+import h5py
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.tri as mtri  # noqa: E402
+import numpy as np  # noqa: E402
+
+
+def plot_crest(out: Path, summary: dict) -> None:
+    data = np.genfromtxt(out / "crest.csv", delimiter=",", names=True)
+    fig, ax = plt.subplots(figsize=(9, 4))
+    ax.plot(data["t_s"], 100 * data["ux_m"], lw=0.9, label="horizontal")
+    ax.plot(data["t_s"], 100 * data["uy_m"], lw=0.9, label="vertical")
+    peak = summary["crest_displacement_max_m"]
+    ax.plot([peak["t"]], [100 * peak["value"]], "ro", ms=4)
+    ax.annotate(f"{100 * peak['value']:.2f} cm", (peak["t"], 100 * peak["value"]),
+                textcoords="offset points", xytext=(6, 6))
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel("crest displacement relative to base [cm]")
+    ax.set_title("Crest displacement (seismic part)")
+    ax.grid(alpha=0.3)
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(out / "crest_history.png", dpi=130)
+    plt.close(fig)
+
+
+def plot_envelopes(out: Path, summary: dict) -> None:
+    with h5py.File(out / "envelopes.h5", "r") as f:
+        x = f["Mesh/mesh/geometry"][:]
+        cells = f["Mesh/mesh/topology"][:]
+        vmax = f["Function/max_principal_envelope_vertex/0"][:].ravel() * 1e-6
+        vmin = f["Function/min_principal_envelope_vertex/0"][:].ravel() * 1e-6
+        cmax = f["Function/max_principal_envelope/0"][:].ravel()
+    # Plot the dam only: cells with a finite envelope (the foundation is not
+    # tracked) -- the cell envelope is written for every cell, so use the
+    # vertex values of cells inside the dam region (finite values).
+    keep = np.isfinite(cmax)
+    tri = mtri.Triangulation(x[:, 0], x[:, 1], cells[keep])
+    fig, axes = plt.subplots(1, 2, figsize=(11, 6.5))
+    kind = summary.get("stress", "total")
+    for ax, values, title, cmap, key in (
+        (axes[0], vmax, "max principal stress (tension +)", "RdYlBu_r",
+         "max_principal_tension_mpa"),
+        (axes[1], vmin, "min principal stress (compression -)", "RdYlBu_r",
+         "max_principal_compression_mpa"),
+    ):
+        finite = np.where(np.isfinite(values), values, 0.0)
+        cs = ax.tricontourf(tri, finite, levels=20, cmap=cmap)
+        fig.colorbar(cs, ax=ax, shrink=0.8, label="MPa")
+        e = summary[key]
+        ax.plot([e["x"]], [e["y"]], "k*", ms=9)
+        ax.annotate(f"{e['value']:.2f} MPa at t = {e['t']:.2f} s",
+                    (e["x"], e["y"]), textcoords="offset points",
+                    xytext=(8, -14), fontsize=8)
+        used = np.unique(cells[keep])
+        pad = 0.05 * np.ptp(x[used, 1])
+        ax.set_xlim(x[used, 0].min() - pad, x[used, 0].max() + pad)
+        ax.set_ylim(x[used, 1].min() - pad, x[used, 1].max() + pad)
+        ax.set_aspect("equal")
+        ax.set_title(f"Envelope of {title}\n({kind} stress)", fontsize=10)
+        ax.set_xlabel("x [m]")
+        ax.set_ylabel("y [m]")
+    fig.tight_layout()
+    fig.savefig(out / "envelopes.png", dpi=130)
+    plt.close(fig)
+
+
+def main() -> None:
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    out = Path(sys.argv[1])
+    summary = json.loads((out / "summary.json").read_text())
+    plot_crest(out, summary)
+    plot_envelopes(out, summary)
+
+
+if __name__ == "__main__":
+    main()
