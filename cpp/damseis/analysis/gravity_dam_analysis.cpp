@@ -205,8 +205,8 @@ json run_gravity_dam_analysis(MPI_Comm comm, const GravityDamConfig& cfg,
 
   output::PointProbe crest(*fe.V(), cfg.crest_point);
   output::PointProbe base(*fe.V(), cfg.base_point);
-  const auto crest_static = crest.value(u_static.vec());
-  const auto base_static = base.value(u_static.vec());
+  const auto crest_static = crest.value_on_all(u_static.vec());
+  const auto base_static = base.value_on_all(u_static.vec());
   const int n = cfg.steps;
   const double dt = cfg.scheme.dt;
   std::vector<double> hist(4 * (n + 1), 0.0); // crest x,y and base x,y

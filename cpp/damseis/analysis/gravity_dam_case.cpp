@@ -1,6 +1,7 @@
 #include "gravity_dam_case.h"
 #include <cmath>
 #include <damseis/motion/record.h>
+#include <sstream>
 
 namespace damseis::analysis
 {
@@ -132,8 +133,9 @@ GroundMotion read_motion(const input::Case& c, const std::string& which,
   }
   catch (const motion::RecordError& e)
   {
-    c.fail(p + ".record", e.what(),
-           "a readable PEER .at2 or one/two-column record file");
+    // The record error already says what is wrong and what is expected.
+    throw input::InputError(c.file().string() + ": " + p +
+                            ".record: " + e.what());
   }
   if (duration == 0.0)
     duration = r.duration();
@@ -225,10 +227,11 @@ GravityDamConfig read_gravity_dam_config(const input::Case& c)
   g.westergaard = c.boolean("reservoir.westergaard");
   if (g.reservoir.level > s.crest_y)
   {
-    c.fail("reservoir.level",
-           "= " + std::to_string(g.reservoir.level) + " m is above the crest",
-           "a level between 0 and geometry.crest_y = " +
-               std::to_string(s.crest_y) + " m");
+    std::ostringstream problem, expected;
+    problem << "= " << g.reservoir.level << " m is above the crest";
+    expected << "a level between 0 and geometry.crest_y = " << s.crest_y
+             << " m";
+    c.fail("reservoir.level", problem.str(), expected.str());
   }
   s.water_level = g.reservoir.level;
 

@@ -54,6 +54,15 @@ std::array<double, 3> PointProbe::value(Vec u) const
   return v;
 }
 
+std::array<double, 3> PointProbe::value_on_all(Vec u) const
+{
+  std::array<double, 3> v = value(u);
+  MPI_Comm comm;
+  PetscObjectGetComm(reinterpret_cast<PetscObject>(u), &comm);
+  MPI_Allreduce(MPI_IN_PLACE, v.data(), 3, MPI_DOUBLE, MPI_SUM, comm);
+  return v;
+}
+
 void reduce_history(MPI_Comm comm, std::vector<double>& history)
 {
   MPI_Allreduce(MPI_IN_PLACE, history.data(), history.size(), MPI_DOUBLE,

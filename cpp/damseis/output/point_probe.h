@@ -20,6 +20,8 @@ public:
   double distance() const { return _distance; }
   /// Values of the node's components in `u` (owner rank; 0 elsewhere).
   std::array<double, 3> value(Vec u) const;
+  /// Values of the node's components in `u` on every rank (collective).
+  std::array<double, 3> value_on_all(Vec u) const;
 
 private:
   int _bs = 0;

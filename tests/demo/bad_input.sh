@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# Bad input to the koyna demo: one clear line naming the file and the key,
+# exit code 2, and nothing written to the output folder.
+# Usage: bad_input.sh KOYNA_EXECUTABLE
+set -u
+exe=$1
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+
+# expect NAME PATTERN ARGS...: exit 2, one stderr line matching PATTERN, no
+# output folder.
+expect() {
+  local name=$1 pattern=$2
+  shift 2
+  local out="$work/out_$name"
+  "$exe" --out "$out" "$@" >"$work/stdout" 2>"$work/stderr"
+  local rc=$?
+  local lines
+  lines=$(wc -l <"$work/stderr")
+  if [ "$rc" -ne 2 ]; then
+    echo "FAIL $name: exit code $rc, expected 2"; failures=$((failures + 1))
+  elif [ "$lines" -ne 1 ]; then
+    echo "FAIL $name: $lines stderr lines, expected 1:"; cat "$work/stderr"
+    failures=$((failures + 1))
+  elif ! grep -Eq -- "$pattern" "$work/stderr"; then
+    echo "FAIL $name: message does not match '$pattern':"; cat "$work/stderr"
+    failures=$((failures + 1))
+  elif [ -e "$out" ]; then
+    echo "FAIL $name: output folder was created"; failures=$((failures + 1))
+  else
+    echo "ok   $name: $(cat "$work/stderr")"
+  fi
+}
+
+printf 'mesh = [\n' >"$work/malformed.toml"
+printf '[material]\nEE = 3e10\n' >"$work/unknown.toml"
+printf '[material]\nE = "thirty"\n' >"$work/wrongtype.toml"
+printf '[material]\nE = -3e10\n' >"$work/negative.toml"
+printf '[motion.horizontal]\nrecord = "missing.at2"\n' >"$work/missing.toml"
+printf 'garbage here\n' >"$work/bad.at2"
+printf '[motion.horizontal]\nrecord = "bad.at2"\n' >"$work/badrecord.toml"
+
+expect malformed_toml 'malformed\.toml:[0-9]+' --case "$work/malformed.toml"
+expect unknown_key 'unknown\.toml.*material\.EE.*material\.E' --case "$work/unknown.toml"
+expect wrong_type 'wrongtype\.toml.*material\.E' --case "$work/wrongtype.toml"
+expect negative_modulus 'negative\.toml.*material\.E.*E > 0' --case "$work/negative.toml"
+expect poisson_ratio 'koyna\.toml.*material\.nu.*0\.5' --set material.nu=0.6
+expect zero_time_step 'koyna\.toml.*time\.dt' --set time.dt=0
+expect negative_time_step 'koyna\.toml.*time\.dt' --set time.dt=-0.01
+expect reservoir_above_crest 'koyna\.toml.*reservoir\.level.*crest' --set reservoir.level=120
+expect missing_record 'missing\.toml.*motion\.horizontal\.record.*missing\.at2' --case "$work/missing.toml"
+expect unreadable_record 'badrecord\.toml.*motion\.horizontal\.record.*bad\.at2' --case "$work/badrecord.toml"
+expect missing_case_file 'nonexistent\.toml' --case "$work/nonexistent.toml"
+expect bad_set_syntax 'mesh\.order' --set mesh.order
+expect unknown_option 'bogus' --bogus
+
+if [ "$failures" -ne 0 ]; then
+  echo "$failures bad-input checks failed"; exit 1
+fi
+echo "all bad-input checks passed"
