@@ -29,9 +29,9 @@ LinearNewmark::LinearNewmark(Mat M, Mat K, RayleighDamping damping,
                              fem::Factorization factorization)
     : _M(M), _K(K), _damping(damping), _scheme(scheme)
 {
-  if (!(scheme.dt > 0.0))
+  if (!(scheme.dt > 0.0 && std::isfinite(scheme.dt)))
     throw std::invalid_argument("time step must be positive");
-  if (scheme.alpha < -1.0 / 3.0 - 1e-14 || scheme.alpha > 0.0)
+  if (!(scheme.alpha >= -1.0 / 3.0 - 1e-14 && scheme.alpha <= 0.0))
     throw std::invalid_argument("HHT alpha must lie in [-1/3, 0]");
   const double dt = scheme.dt, beta = scheme.beta(), gamma = scheme.gamma();
   const double alpha = scheme.alpha;

@@ -11,8 +11,8 @@ namespace damseis::fem
 /// The factorisations PETSc offers here (bench/ compares them).
 enum class Factorization
 {
-  automatic, ///< PETSc's own Cholesky (nested dissection) serial, else MUMPS
-  petsc,     ///< PETSc's own Cholesky with nested-dissection ordering (serial)
+  automatic, ///< PETSc's own factorisation serial, else MUMPS
+  petsc,     ///< PETSc's own LU/Cholesky, nested-dissection ordering (serial)
   mumps,     ///< MUMPS Cholesky (serial or parallel)
   cholmod,   ///< SuiteSparse CHOLMOD (serial)
 };
@@ -20,6 +20,9 @@ enum class Factorization
 /// Parses "auto", "petsc", "mumps" or "cholmod"; throws
 /// std::invalid_argument otherwise.
 Factorization parse_factorization(const std::string& name);
+
+/// True for blocked, non-symmetric storage (BAIJ): one block per node.
+bool is_blocked(Mat A);
 
 /// A KSP in "preonly" mode with a Cholesky preconditioner.
 class DirectSolver
@@ -31,7 +34,8 @@ public:
   DirectSolver& operator=(const DirectSolver&) = delete;
 
   /// Factorises A (marked symmetric positive definite). A must outlive the
-  /// solver's use of it.
+  /// solver's use of it. With blocked storage (BAIJ) PETSc's own solver uses
+  /// LU (its fastest here); MUMPS and CHOLMOD get a converted copy.
   void factorize(Mat A);
   /// Solves A x = b with the stored factors.
   void solve(Vec b, Vec x) const;
@@ -42,6 +46,7 @@ public:
 
 private:
   KSP _ksp = nullptr;
+  Mat _converted = nullptr; ///< A in the storage the package needs
   Factorization _kind;
   double _factor_seconds = 0.0;
 };

@@ -153,7 +153,7 @@ void finish_matrix(Mat A)
 Mat ElasticModel::assemble_stiffness() const
 {
   auto a = make_form(_forms.a_stiffness, {_V, _V});
-  Mat A = dfem::petsc::create_matrix(*a);
+  Mat A = dfem::petsc::create_matrix(*a, _matrix_type);
   MatZeroEntries(A);
   dfem::assemble_matrix(dolfinx::la::petsc::Matrix::set_block_fn(A, ADD_VALUES),
                         *a, _bcs);
@@ -168,7 +168,7 @@ Mat ElasticModel::assemble_stiffness() const
 Mat ElasticModel::assemble_mass(const Reservoir* reservoir) const
 {
   auto m = make_form(_forms.a_mass, {_V, _V});
-  Mat A = dfem::petsc::create_matrix(*m);
+  Mat A = dfem::petsc::create_matrix(*m, _matrix_type);
   MatZeroEntries(A);
   auto add = dolfinx::la::petsc::Matrix::set_block_fn(A, ADD_VALUES);
   dfem::assemble_matrix(add, *m, _bcs);

@@ -79,6 +79,10 @@ public:
   /// "u_vertex" (P1 vector), "s_vertex" (P1 scalar).
   std::shared_ptr<const FunctionSpace> output_space(const std::string& name);
 
+  /// PETSc storage of K and M: "baij" (default; one block per node, the
+  /// fastest here for products and factorisations) or "aij".
+  void set_matrix_type(const std::string& type) { _matrix_type = type; }
+
   /// Fixes every displacement component on the facets with these tags.
   void fix(const std::vector<int>& facet_tags);
   const std::vector<std::shared_ptr<const dolfinx::fem::DirichletBC<double>>>&
@@ -130,6 +134,7 @@ private:
   geometry::Model _model;
   const FormSet& _forms;
   std::shared_ptr<FunctionSpace> _V, _S;
+  std::string _matrix_type = "baij";
   std::map<std::string, std::shared_ptr<const FunctionSpace>> _outputs;
   std::shared_ptr<Function> _mu, _lmbda, _rho;
   std::vector<std::shared_ptr<const dolfinx::fem::DirichletBC<double>>> _bcs;

@@ -1,4 +1,5 @@
 #include "modal.h"
+#include "direct_solver.h"
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -56,7 +57,8 @@ Modes solve_modes(Mat K, Mat M, int count)
   KSPSetType(ksp, KSPPREONLY);
   PC pc;
   KSPGetPC(ksp, &pc);
-  PCSetType(pc, PCCHOLESKY);
+  // MUMPS Cholesky does not take blocked (BAIJ) storage; LU does.
+  PCSetType(pc, is_blocked(K) ? PCLU : PCCHOLESKY);
   PCFactorSetMatSolverType(pc, MATSOLVERMUMPS);
   EPSSolve(eps);
 
