@@ -39,35 +39,71 @@ LinearNewmark::LinearNewmark(Mat M, Mat K, RayleighDamping damping,
 
   // K_eff = a0 M + (1 + alpha)(a1 C + K)
   //       = (a0 + (1 + alpha) a1 a_M) M + (1 + alpha)(1 + a1 b_K) K.
+  _cM = a0 + (1.0 + alpha) * a1 * damping.a_mass;
+  _cK = (1.0 + alpha) * (1.0 + a1 * damping.b_stiffness);
   MatDuplicate(K, MAT_COPY_VALUES, &_Keff);
-  MatScale(_Keff, (1.0 + alpha) * (1.0 + a1 * damping.b_stiffness));
-  MatAXPY(_Keff, a0 + (1.0 + alpha) * a1 * damping.a_mass, M,
-          SUBSET_NONZERO_PATTERN);
+  MatScale(_Keff, _cK);
+  MatAXPY(_Keff, _cM, M, SUBSET_NONZERO_PATTERN);
   MPI_Comm comm;
   PetscObjectGetComm(reinterpret_cast<PetscObject>(K), &comm);
   _solver = std::make_unique<fem::DirectSolver>(comm, factorization);
   _solver->factorize(_Keff);
 
-  for (Vec* x : {&_u, &_v, &_a, &_f, &_x1, &_x2, &_w, &_rhs, &_u_next})
+  for (std::array<Vec, 3>* set : {&_x, &_Mx, &_Kx})
+  {
+    for (Vec& x : *set)
+      MatCreateVecs(K, &x, nullptr);
+  }
+  for (Vec* x : {&_f, &_rhs, &_u_next, &_a_next, &_image_next})
     MatCreateVecs(K, x, nullptr);
-  for (Vec x : {_u, _v, _a, _f, _x1, _x2, _w, _rhs, _u_next})
-    VecSet(x, 0.0); // the AXPBYPCZ updates below read their target
+  for (std::array<Vec, 3>* set : {&_x, &_Mx, &_Kx})
+  {
+    for (Vec x : *set)
+      VecSet(x, 0.0);
+  }
+  for (Vec x : {_f, _rhs, _u_next, _a_next, _image_next})
+    VecSet(x, 0.0);
 }
 
 LinearNewmark::~LinearNewmark()
 {
-  for (Vec* x : {&_u, &_v, &_a, &_f, &_x1, &_x2, &_w, &_rhs, &_u_next})
+  for (std::array<Vec, 3>* set : {&_x, &_Mx, &_Kx})
+  {
+    for (Vec& x : *set)
+      VecDestroy(&x);
+  }
+  for (Vec* x : {&_f, &_rhs, &_u_next, &_a_next, &_image_next})
     VecDestroy(x);
   MatDestroy(&_Keff);
 }
 
 void LinearNewmark::set_state(Vec u, Vec v, Vec a, Vec f)
 {
-  VecCopy(u, _u);
-  VecCopy(v, _v);
-  VecCopy(a, _a);
+  const std::array<Vec, 3> in = {u, v, a};
+  for (int i = 0; i < 3; ++i)
+  {
+    VecCopy(in[i], _x[i]);
+    MatMult(_M, _x[i], _Mx[i]);
+    MatMult(_K, _x[i], _Kx[i]);
+  }
   VecCopy(f, _f);
 }
+
+namespace
+{
+/// Newmark update of one (u, v, a) triple to the new u:
+/// a' = a0 (u' - u) - a2 v - a3 a,  v' = v + dt ((1 - gamma) a + gamma a'),
+/// then u <- u'. `a_next` is scratch.
+void advance(std::array<Vec, 3>& x, Vec u_next, Vec a_next, double a0,
+             double a2, double a3, double dt, double gamma)
+{
+  VecWAXPY(a_next, -1.0, x[0], u_next);
+  VecAXPBYPCZ(a_next, -a2, -a3, a0, x[1], x[2]);
+  VecAXPBYPCZ(x[1], dt * (1.0 - gamma), dt * gamma, 1.0, x[2], a_next);
+  VecCopy(a_next, x[2]);
+  VecCopy(u_next, x[0]);
+}
+} // namespace
 
 void LinearNewmark::step(Vec f_next)
 {
@@ -78,31 +114,34 @@ void LinearNewmark::step(Vec f_next)
                a4 = gamma / beta - 1.0, a5 = dt * (0.5 * gamma / beta - 1.0);
   const double aM = _damping.a_mass, bK = _damping.b_stiffness;
 
-  // w = a1 u + a4 v + a5 a (velocity-like part of the damping term)
-  VecAXPBYPCZ(_w, a1, a4, 0.0, _u, _v);
-  VecAXPY(_w, a5, _a);
-  // x1 = a0 u + a2 v + a3 a + (1 + alpha) a_M w + alpha a_M v
-  VecAXPBYPCZ(_x1, a0, a2, 0.0, _u, _v);
-  VecAXPBYPCZ(_x1, a3, (1.0 + alpha) * aM, 1.0, _a, _w);
-  VecAXPY(_x1, alpha * aM, _v);
-  // x2 = (1 + alpha) b_K w + alpha b_K v + alpha u
-  VecAXPBYPCZ(_x2, (1.0 + alpha) * bK, alpha * bK, 0.0, _w, _v);
-  VecAXPY(_x2, alpha, _u);
-  // rhs = (1 + alpha) f_{n+1} - alpha f_n + M x1 + K x2
-  MatMult(_M, _x1, _rhs);
-  MatMultAdd(_K, _x2, _rhs, _rhs);
-  VecAXPBYPCZ(_rhs, 1.0 + alpha, -alpha, 1.0, f_next, _f);
+  // HHT: M a' + (1 + alpha)(C v' + K u') - alpha (C v + K u)
+  //        = (1 + alpha) f' - alpha f,
+  // with a', v' expressed by u' gives K_eff u' = rhs, where
+  // rhs = (1 + alpha) f' - alpha f + M (a0 u + a2 v + a3 a)
+  //       + (1 + alpha) C (a1 u + a4 v + a5 a) + alpha (C v + K u).
+  const double w = 1.0 + alpha;
+  const PetscScalar coef[8] = {w,
+                               -alpha,
+                               a0 + w * a1 * aM,
+                               a2 + w * a4 * aM + alpha * aM,
+                               a3 + w * a5 * aM,
+                               w * a1 * bK + alpha,
+                               w * a4 * bK + alpha * bK,
+                               w * a5 * bK};
+  Vec terms[8] = {f_next, _f, _Mx[0], _Mx[1], _Mx[2], _Kx[0], _Kx[1], _Kx[2]};
+  VecSet(_rhs, 0.0);
+  VecMAXPY(_rhs, 8, coef, terms);
 
   _solver->solve(_rhs, _u_next);
 
-  // a_{n+1} = a0 (u_{n+1} - u_n) - a2 v_n - a3 a_n  (stored in _w)
-  VecWAXPY(_w, -1.0, _u, _u_next);
-  VecScale(_w, a0);
-  VecAXPBYPCZ(_w, -a2, -a3, 1.0, _v, _a);
-  // v_{n+1} = v_n + dt ((1 - gamma) a_n + gamma a_{n+1})
-  VecAXPBYPCZ(_v, dt * (1.0 - gamma), dt * gamma, 1.0, _a, _w);
-  std::swap(_a, _w);
-  std::swap(_u, _u_next);
+  // Images of the new displacement: M u' by a product, K u' from the
+  // solved equation (exact up to the solver's residual).
+  MatMult(_M, _u_next, _image_next);
+  advance(_Mx, _image_next, _a_next, a0, a2, a3, dt, gamma);
+  VecWAXPY(_image_next, -_cM, _Mx[0], _rhs);
+  VecScale(_image_next, 1.0 / _cK);
+  advance(_Kx, _image_next, _a_next, a0, a2, a3, dt, gamma);
+  advance(_x, _u_next, _a_next, a0, a2, a3, dt, gamma);
   VecCopy(f_next, _f);
 }
 } // namespace damseis::dynamics

@@ -4,6 +4,7 @@
 // effective matrix is factorised once and reused at every step.
 #pragma once
 
+#include <array>
 #include <damseis/fem/direct_solver.h>
 #include <memory>
 #include <petscmat.h>
@@ -32,6 +33,11 @@ struct TimeScheme
 };
 
 /// The integrator. State vectors have the layout of K's columns.
+///
+/// Besides (u, v, a) it carries their images M u, M v, M a and K u, K v,
+/// K a, which obey the same Newmark recurrences. A step then costs one
+/// triangular solve and one product with M: K u_{n+1} follows from the
+/// solved equation, K_eff u_{n+1} = rhs with K_eff = c_M M + c_K K.
 class LinearNewmark
 {
 public:
@@ -50,9 +56,9 @@ public:
   /// Advances one step to the load f_next = f(t + dt).
   void step(Vec f_next);
 
-  Vec u() const { return _u; }
-  Vec v() const { return _v; }
-  Vec a() const { return _a; }
+  Vec u() const { return _x[0]; }
+  Vec v() const { return _x[1]; }
+  Vec a() const { return _x[2]; }
   const TimeScheme& scheme() const { return _scheme; }
   const fem::DirectSolver& solver() const { return *_solver; }
 
@@ -60,10 +66,12 @@ private:
   Mat _M, _K;
   RayleighDamping _damping;
   TimeScheme _scheme;
+  double _cM = 0.0, _cK = 0.0; ///< K_eff = c_M M + c_K K
   Mat _Keff = nullptr;
   std::unique_ptr<fem::DirectSolver> _solver;
-  Vec _u = nullptr, _v = nullptr, _a = nullptr, _f = nullptr;
-  Vec _x1 = nullptr, _x2 = nullptr, _w = nullptr, _rhs = nullptr,
-      _u_next = nullptr;
+  /// (u, v, a), their M images and K images; f is the current load.
+  std::array<Vec, 3> _x{}, _Mx{}, _Kx{};
+  Vec _f = nullptr, _rhs = nullptr, _u_next = nullptr, _a_next = nullptr,
+      _image_next = nullptr;
 };
 } // namespace damseis::dynamics

@@ -8,7 +8,10 @@ std::array<double, 2> principal_extremes(const double* s, int n)
   if (n == 3)
   {
     const double c = 0.5 * (s[0] + s[1]);
-    const double r = std::hypot(0.5 * (s[0] - s[1]), s[2]);
+    const double d = 0.5 * (s[0] - s[1]);
+    // sqrt rather than hypot: no overflow risk at stress magnitudes, and
+    // this runs at every stress point every step.
+    const double r = std::sqrt(d * d + s[2] * s[2]);
     return {c + r, c - r};
   }
   Eigen::Matrix3d m;
