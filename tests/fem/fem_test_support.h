@@ -14,9 +14,12 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <iostream>
 #include <memory>
 #include <numeric>
 #include <span>
+#include <sstream>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -31,8 +34,10 @@
 #include <dolfinx/mesh/cell_types.h>
 #include <dolfinx/mesh/generation.h>
 #include <dolfinx/mesh/utils.h>
+#include <gtest/gtest.h>
 #include <mpi.h>
 #include <petscmat.h>
+#include <petscsys.h>
 #include <petscvec.h>
 
 namespace damseis::test
@@ -43,8 +48,14 @@ using PMat = dolfinx::la::petsc::Matrix; ///< owns (destroys) a Mat
 using Point = std::array<double, 3>;
 
 /// Takes ownership of a new Vec / Mat returned by ElasticModel.
-inline PVec own(Vec v) { return PVec(v, false); }
-inline PMat own(Mat m) { return PMat(m, false); }
+inline PVec own(Vec v)
+{
+  return PVec(v, false);
+}
+inline PMat own(Mat m)
+{
+  return PMat(m, false);
+}
 
 inline double global_sum(double v, MPI_Comm comm = MPI_COMM_WORLD)
 {
@@ -60,10 +71,30 @@ inline double global_max(double v, MPI_Comm comm = MPI_COMM_WORLD)
   return g;
 }
 
+/// Prints an observed quantity on rank 0 (for the record in the test log).
+inline void print_metric(const std::string& text)
+{
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  if (rank == 0)
+    std::cout << "[   metric ] " << text << std::endl;
+}
+
+/// Concatenates values into a string for print_metric: fmt("err ", 1e-3).
+template <typename... T>
+std::string fmt(const T&... v)
+{
+  std::ostringstream os;
+  os.precision(6);
+  ((os << v), ...);
+  return os.str();
+}
+
 /// Moves the interior geometry nodes (local owned + ghost) of the box
-/// [lo, hi] by a smooth, deterministic perturbation of amplitude `amp` per coordinate. The perturbation is a
-/// function of the original coordinates only, so nodes shared between
-/// ranks move identically. Boundary nodes stay (the domain is unchanged).
+/// [lo, hi] by a smooth, deterministic perturbation of amplitude `amp` per
+/// coordinate. The perturbation is a function of the original coordinates only,
+/// so nodes shared between ranks move identically. Boundary nodes stay (the
+/// domain is unchanged).
 inline void perturb_interior(dolfinx::mesh::Mesh& mesh, const Point& lo,
                              const Point& hi, double amp)
 {
@@ -83,8 +114,8 @@ inline void perturb_interior(dolfinx::mesh::Mesh& mesh, const Point& lo,
     const Point p0 = {p[0], p[1], p[2]};
     for (int k = 0; k < gdim; ++k)
     {
-      p[k] += amp * std::sin(12.9898 * p0[0] + 78.233 * p0[1] +
-                             37.719 * p0[2] + 1.7 * k + 0.3);
+      p[k] += amp * std::sin(12.9898 * p0[0] + 78.233 * p0[1] + 37.719 * p0[2] +
+                             1.7 * k + 0.3);
     }
   }
 }
@@ -121,9 +152,8 @@ inline double min_cell_measure(const dolfinx::mesh::Mesh& mesh)
 /// Wraps a DOLFINx built-in mesh as a geometry::Model: every local cell
 /// (owned and ghost) is region tags::dam; every exterior facet gets the
 /// tag `facet_tag(midpoint)` (no tag if it returns a negative value).
-inline Model
-model_from_mesh(std::shared_ptr<dolfinx::mesh::Mesh> mesh,
-                const std::function<int(const Point&)>& facet_tag)
+inline Model model_from_mesh(std::shared_ptr<dolfinx::mesh::Mesh> mesh,
+                             const std::function<int(const Point&)>& facet_tag)
 {
   const int tdim = mesh->topology().dim();
   const int fdim = tdim - 1;
@@ -168,10 +198,10 @@ inline Model rectangle_model(MPI_Comm comm, std::array<double, 2> lo,
                              std::array<std::size_t, 2> n,
                              const std::function<int(const Point&)>& facet_tag)
 {
-  auto mesh = std::make_shared<dolfinx::mesh::Mesh>(
-      dolfinx::mesh::create_rectangle(comm, {lo, hi}, n,
-                                      dolfinx::mesh::CellType::triangle,
-                                      dolfinx::mesh::GhostMode::shared_facet));
+  auto mesh =
+      std::make_shared<dolfinx::mesh::Mesh>(dolfinx::mesh::create_rectangle(
+          comm, {lo, hi}, n, dolfinx::mesh::CellType::triangle,
+          dolfinx::mesh::GhostMode::shared_facet));
   return model_from_mesh(mesh, facet_tag);
 }
 
@@ -222,16 +252,56 @@ inline double quad(Mat M, Vec a, Vec b)
   return r;
 }
 
+/// Records the PETSc errors raised while it lives instead of letting the
+/// runner's abort handler (main.cpp) stop the whole run: a PETSc error
+/// inside a library call then fails the test that made it (expect_none)
+/// and the other tests still run. Library code ignores PETSc return codes,
+/// so execution goes on after the error.
+class PetscErrorRecorder
+{
+public:
+  PetscErrorRecorder() { PetscPushErrorHandler(&handler, this); }
+  ~PetscErrorRecorder() { PetscPopErrorHandler(); }
+  PetscErrorRecorder(const PetscErrorRecorder&) = delete;
+  PetscErrorRecorder& operator=(const PetscErrorRecorder&) = delete;
+
+  /// Fails the current test if any rank recorded an error (collective).
+  void expect_none(const std::string& where) const
+  {
+    const double n = global_sum(double(_errors.size()));
+    EXPECT_EQ(n, 0.0) << "PETSc error(s) inside " << where << ": "
+                      << (_errors.empty() ? std::string("(on another rank)")
+                                          : _errors.front());
+  }
+
+private:
+  static PetscErrorCode handler(MPI_Comm, int line, const char* fun,
+                                const char* file, PetscErrorCode n,
+                                PetscErrorType p, const char* mess, void* ctx)
+  {
+    if (p == PETSC_ERROR_INITIAL)
+    {
+      static_cast<PetscErrorRecorder*>(ctx)->_errors.push_back(
+          std::string(fun) + " (" + file + ":" + std::to_string(line) + "): " +
+          (mess ? mess : "") + " [PETSc error " + std::to_string(n) + "]");
+    }
+    return n;
+  }
+  std::vector<std::string> _errors;
+};
+
 /// Solves K u = b with the project's direct solver into the Function u
-/// (ghosts updated).
+/// (ghosts updated). A PETSc error inside the solver fails the test.
 inline void solve(Mat K, Vec b, dolfinx::fem::Function<double>& u)
 {
+  PetscErrorRecorder errors;
   damseis::fem::DirectSolver solver(u.function_space()->mesh()->comm());
   solver.factorize(K);
   Vec x = dolfinx::la::petsc::create_vector_wrap(*u.x());
   solver.solve(b, x);
   VecDestroy(&x);
   u.x()->scatter_fwd();
+  errors.expect_none("DirectSolver (" + solver.name() + ")");
 }
 
 /// Owned entries of a (ghosted or not) Vec, copied.

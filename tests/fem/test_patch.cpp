@@ -21,6 +21,8 @@
 // cells, hence 1e-10 relative on displacements; the stress operator only
 // differentiates the (exact) field at the stress points, hence 1e-9
 // relative (round-off of the element Jacobians and of the lumped weights).
+// Observed (serial and 2 ranks): displacement errors 2e-16 .. 3e-15,
+// stress errors 4e-15 .. 1e-13 (affine), 7e-15 .. 1e-14 (quadratic).
 #include "fem_test_support.h"
 
 #include <damseis/fem/elastic_model.h>
@@ -29,6 +31,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -55,6 +58,12 @@ struct PatchCase
   PlaneMode mode;
   std::string name;
 };
+
+/// gtest prints the case by name.
+void PrintTo(const PatchCase& c, std::ostream* os)
+{
+  *os << c.name;
+}
 
 /// A general displacement gradient: every entry non-zero, not symmetric.
 constexpr Tensor A = {{{1.2e-3, -0.7e-3, 0.5e-3},
@@ -136,8 +145,8 @@ Model patch_model(int dim)
   auto all = [](const Point&) { return int(tags::dam_base); };
   if (dim == 2)
   {
-    Model m = rectangle_model(MPI_COMM_WORLD, {0.3, -0.4}, {1.7, 0.9}, {4, 3},
-                              all);
+    Model m =
+        rectangle_model(MPI_COMM_WORLD, {0.3, -0.4}, {1.7, 0.9}, {4, 3}, all);
     perturb_interior(*m.mesh, {0.3, -0.4, 0}, {1.7, 0.9, 0}, 0.03);
     return m;
   }
@@ -184,6 +193,14 @@ std::pair<double, double> stress_error(const ElasticModel& em,
 class Patch : public ::testing::TestWithParam<PatchCase>
 {
 };
+class PatchP2 : public ::testing::TestWithParam<PatchCase>
+{
+};
+
+std::string case_name(const ::testing::TestParamInfo<PatchCase>& info)
+{
+  return info.param.name;
+}
 } // namespace
 
 TEST_P(Patch, AffineFieldIsReproducedWithConstantStress)
@@ -225,8 +242,10 @@ TEST_P(Patch, AffineFieldIsReproducedWithConstantStress)
     const auto fv = owned_values(f.vec());
     double free_max = 0, fixed_max = 0;
     for (std::int32_t i = 0; i < n_owned; ++i)
-      (is_fixed[i] ? fixed_max : free_max) =
-          std::max(is_fixed[i] ? fixed_max : free_max, std::abs(fv[i]));
+    {
+      double& m = is_fixed[i] ? fixed_max : free_max;
+      m = std::max(m, std::abs(fv[i]));
+    }
     free_max = global_max(free_max);
     fixed_max = global_max(fixed_max);
     EXPECT_GT(fixed_max, 0.0);
@@ -265,41 +284,47 @@ TEST_P(Patch, AffineFieldIsReproducedWithConstantStress)
 
   // 3. B u is the constant stress at every stress point.
   const auto [serr, sref] = stress_error(em, u, false, c.mode);
+  print_metric(fmt("patch ", c.name, ": |u - u_exact|/|u| = ", err / ref,
+                   ", |s - s_exact|/|s| = ", serr / sref));
   EXPECT_GT(sref, 1e6);
   EXPECT_LT(serr, 1e-9 * sref) << "max stress error " << serr << " Pa";
 }
 
-TEST_P(Patch, QuadraticFieldGivesExactLinearStressAtStressPoints)
+TEST_P(PatchP2, QuadraticFieldGivesExactLinearStressAtStressPoints)
 {
-  // Degree 2 only: a quadratic field is exact in P2 and its stress is
-  // linear; the vertex-quadrature stress operator must return it exactly
-  // at the stress points (the vertices of each cell). For P1 the field is
-  // not representable, so the case is skipped.
+  // A quadratic field is exact in P2 and its stress is linear; the
+  // vertex-quadrature stress operator must return it exactly at the
+  // stress points (the vertices of each cell). No solve: this checks B.
   const PatchCase c = GetParam();
-  if (c.degree != 2)
-    GTEST_SKIP() << "quadratic field not in P1";
   Model m = patch_model(c.dim);
   ElasticModel em(m, c.degree, {{tags::dam, Material{E, nu, 2500}}}, c.mode);
   Function u(em.V());
   set_nodal(u, [&](const Point& p) { return displacement(p, c.dim, true); });
   const auto [serr, sref] = stress_error(em, u, true, c.mode);
+  print_metric(
+      fmt("quadratic ", c.name, ": |s - s_exact|/|s| = ", serr / sref));
   EXPECT_GT(sref, 1e6);
   EXPECT_LT(serr, 1e-9 * sref) << "max stress error " << serr << " Pa";
 
-  // The field really is non-affine: the stress varies between points.
-  // (Compare with the affine part alone.)
+  // The field really is non-affine: its stress differs from that of the
+  // affine part alone by much more than the tolerance.
   const auto [dev, dref] = stress_error(em, u, false, c.mode);
-  EXPECT_GT(dev, 1e-3 * dref);
+  EXPECT_GT(dev, 1e-2 * dref);
 }
 
 INSTANTIATE_TEST_SUITE_P(
     Forms, Patch,
-    ::testing::Values(
-        PatchCase{2, 1, PlaneMode::plane_strain, "PlaneStrainP1"},
-        PatchCase{2, 2, PlaneMode::plane_strain, "PlaneStrainP2"},
-        PatchCase{2, 1, PlaneMode::plane_stress, "PlaneStressP1"},
-        PatchCase{2, 2, PlaneMode::plane_stress, "PlaneStressP2"},
-        PatchCase{3, 1, PlaneMode::plane_strain, "Solid3dP1"},
-        PatchCase{3, 2, PlaneMode::plane_strain, "Solid3dP2"}),
-    [](const ::testing::TestParamInfo<PatchCase>& info)
-    { return info.param.name; });
+    ::testing::Values(PatchCase{2, 1, PlaneMode::plane_strain, "PlaneStrainP1"},
+                      PatchCase{2, 2, PlaneMode::plane_strain, "PlaneStrainP2"},
+                      PatchCase{2, 1, PlaneMode::plane_stress, "PlaneStressP1"},
+                      PatchCase{2, 2, PlaneMode::plane_stress, "PlaneStressP2"},
+                      PatchCase{3, 1, PlaneMode::plane_strain, "Solid3dP1"},
+                      PatchCase{3, 2, PlaneMode::plane_strain, "Solid3dP2"}),
+    case_name);
+
+INSTANTIATE_TEST_SUITE_P(
+    Forms, PatchP2,
+    ::testing::Values(PatchCase{2, 2, PlaneMode::plane_strain, "PlaneStrainP2"},
+                      PatchCase{2, 2, PlaneMode::plane_stress, "PlaneStressP2"},
+                      PatchCase{3, 2, PlaneMode::plane_strain, "Solid3dP2"}),
+    case_name);

@@ -64,20 +64,16 @@ bool is_blocked(Mat A)
   MatType type;
   MatGetType(A, &type);
   const std::string t(type);
-  return t.find("baij") != std::string::npos
-         && t.find("sbaij") == std::string::npos;
+  return t.find("baij") != std::string::npos &&
+         t.find("sbaij") == std::string::npos;
 }
 
 void DirectSolver::factorize(Mat A)
 {
+  // Parallel BAIJ rejects MAT_SPD: mark only the factorised matrix SPD.
   MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE);
-  MatSetOption(A, MAT_SPD, PETSC_TRUE);
   const auto t0 = std::chrono::steady_clock::now();
-  MatType type;
-  MatGetType(A, &type);
-  const std::string t(type);
-  const bool blocked = t.find("baij") != std::string::npos &&
-                       t.find("sbaij") == std::string::npos;
+  const bool blocked = is_blocked(A);
   PC pc;
   KSPGetPC(_ksp, &pc);
   Mat F = A;
@@ -108,11 +104,11 @@ void DirectSolver::factorize(Mat A)
   default:
     break;
   }
-  if (F != A)
-  {
-    MatSetOption(F, MAT_SYMMETRIC, PETSC_TRUE);
+  MatSetOption(F, MAT_SYMMETRIC, PETSC_TRUE);
+  int size = 1;
+  MPI_Comm_size(PetscObjectComm(reinterpret_cast<PetscObject>(F)), &size);
+  if (!(blocked && F == A && size > 1))
     MatSetOption(F, MAT_SPD, PETSC_TRUE);
-  }
   KSPSetOperators(_ksp, F, F);
   KSPSetUp(_ksp);
   _factor_seconds =
