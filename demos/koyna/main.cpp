@@ -3,6 +3,7 @@
 // With no arguments it runs demos/koyna/koyna.toml; --help lists the keys.
 #include <cstdio>
 #include <damseis/analysis/gravity_dam_analysis.h>
+#include <damseis/analysis/linear_seismic.h>
 #include <damseis/case/command_line.h>
 #include <damseis/output/progress.h>
 #include <petscsys.h>
@@ -35,6 +36,12 @@ int main(int argc, char** argv)
     if (rank == 0)
       std::fprintf(stderr, "koyna: error: %s\n", e.what());
     status = 2;
+  }
+  catch (const damseis::analysis::Interrupted& e)
+  {
+    if (rank == 0)
+      std::fprintf(stderr, "koyna: %s\n", e.what());
+    status = 3;
   }
   PetscFinalize();
   return status;

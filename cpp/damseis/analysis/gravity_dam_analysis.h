@@ -1,7 +1,5 @@
-// The complete linear seismic analysis of a 2D gravity-dam section:
-// static stage (dead weight, hydrostatic), modal analysis (with and without
-// Westergaard added mass), time history under base excitation, and the
-// outputs (XDMF fields and envelopes, crest history, summary, plots).
+// The linear seismic analysis of a 2D gravity-dam section (demo `koyna`):
+// the section and its model, then the shared linear seismic analysis.
 #pragma once
 
 #include "gravity_dam_case.h"
@@ -11,9 +9,9 @@
 
 namespace damseis::analysis
 {
-/// Runs the analysis and writes its results into `out_dir` (created).
-/// `case_text` (the effective case as TOML) is saved beside the results.
-/// Returns the summary that is also written to summary.json.
+/// Builds the section (rigid base or massless foundation block), runs the
+/// linear seismic analysis and writes its results into `out_dir`, with
+/// summary.json and the plots. Returns the summary.
 nlohmann::json run_gravity_dam_analysis(MPI_Comm comm,
                                         const GravityDamConfig& config,
                                         const std::filesystem::path& out_dir,

@@ -695,6 +695,19 @@ const Key* Schema::find(const std::string& path) const
   return nullptr;
 }
 
+void Schema::set_default(const std::string& path, const std::string& value)
+{
+  for (Key& key : keys_)
+  {
+    if (key.path == path)
+    {
+      key.default_value = value;
+      return;
+    }
+  }
+  throw std::logic_error("set_default: unknown key " + path);
+}
+
 void Schema::validate() const
 {
   for (const Key& key : keys_)

@@ -153,6 +153,9 @@ public:
   const std::vector<Key>& keys() const { return keys_; }
   /// The key with this dotted path, or nullptr.
   const Key* find(const std::string& path) const;
+  /// Changes the default of an existing key (a demo's own default for a
+  /// shared key); std::logic_error if the key does not exist.
+  void set_default(const std::string& path, const std::string& value);
   /// Checks every default against its key's type, bounds and choices (and
   /// that bounds/choices suit the type); throws std::logic_error otherwise.
   void validate() const;

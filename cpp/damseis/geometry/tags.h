@@ -22,5 +22,35 @@ enum Boundary : int
   foundation_sides = 6,
   reservoir_floor = 7, ///< foundation top surface upstream of the dam
   foundation_top_downstream = 8,
+  // 3D arch-dam models (arch_mesh.h). There upstream_face, downstream_face,
+  // crest and dam_base (= the dam-foundation interface, abutments included)
+  // keep their meaning; foundation_sides are the cross-canyon ends (x = min,
+  // max); reservoir_floor is the rock surface of the valley upstream of the
+  // dam (floor and banks) and foundation_top_downstream the valley surface
+  // downstream of it.
+  foundation_top = 9,         ///< 3D: rock plateau at the crest elevation
+  foundation_upstream = 10,   ///< 3D: far boundary y = y_min (upstream end)
+  foundation_downstream = 11, ///< 3D: far boundary y = y_max
+  /// 3D: contraction joints: joint k (0 for label A) has the facet tags
+  /// joint_side1(k) = 100 + 2k (side 1, the block on its left, smaller x)
+  /// and joint_side2(k) = 101 + 2k (side 2, duplicated nodes).
+  joint_base = 100,
 };
+
+/// Facet tag of side 1 of joint k (k = 0 for label 'A').
+constexpr int joint_side1(int k)
+{
+  return joint_base + 2 * k;
+}
+/// Facet tag of side 2 of joint k.
+constexpr int joint_side2(int k)
+{
+  return joint_base + 2 * k + 1;
+}
+/// True if the facet tag is a joint side; then (tag - joint_base) / 2 is
+/// the joint's label index and (tag - joint_base) % 2 + 1 the side.
+constexpr bool is_joint_tag(int tag)
+{
+  return tag >= joint_base and tag < joint_base + 2 * 26;
+}
 } // namespace damseis::tags

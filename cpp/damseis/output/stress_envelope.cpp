@@ -52,14 +52,25 @@ void StressEnvelope::update(std::span<const double> s, double t)
   }
 }
 
+void StressEnvelope::restore(std::span<const double> max,
+                             std::span<const double> t_max,
+                             std::span<const double> min,
+                             std::span<const double> t_min)
+{
+  std::copy(max.begin(), max.end(), _max.begin());
+  std::copy(t_max.begin(), t_max.end(), _t_max.begin());
+  std::copy(min.begin(), min.end(), _min.begin());
+  std::copy(t_min.begin(), t_min.end(), _t_min.begin());
+}
+
 namespace
 {
 /// The extreme of `v` (largest if `sign` = 1, smallest if -1) over the
-/// region points of all ranks, with its location and time.
+/// candidate points of all ranks, with its location and time.
 Extreme global_extreme(MPI_Comm comm, const std::vector<double>& v,
                        const std::vector<double>& t,
                        const std::vector<std::array<double, 3>>& x,
-                       const std::vector<std::int8_t>& in_region, double sign)
+                       const std::vector<std::int32_t>& candidates, double sign)
 {
   struct
   {
@@ -67,10 +78,10 @@ Extreme global_extreme(MPI_Comm comm, const std::vector<double>& v,
     int rank;
   } local{-std::numeric_limits<double>::infinity(), 0}, global;
   MPI_Comm_rank(comm, &local.rank);
-  std::size_t best = 0;
-  for (std::size_t i = 0; i < v.size(); ++i)
+  std::int32_t best = -1;
+  for (std::int32_t i : candidates)
   {
-    if (in_region[i] && sign * v[i] > local.value)
+    if (sign * v[i] > local.value)
     {
       local.value = sign * v[i];
       best = i;
@@ -78,20 +89,40 @@ Extreme global_extreme(MPI_Comm comm, const std::vector<double>& v,
   }
   MPI_Allreduce(&local, &global, 1, MPI_DOUBLE_INT, MPI_MAXLOC, comm);
   std::array<double, 5> data = {0, 0, 0, 0, 0};
-  if (global.rank == local.rank && !v.empty())
+  if (global.rank == local.rank && best >= 0)
     data = {v[best], x[best][0], x[best][1], x[best][2], t[best]};
   MPI_Bcast(data.data(), 5, MPI_DOUBLE, global.rank, comm);
   return {data[0], {data[1], data[2], data[3]}, data[4]};
 }
 } // namespace
 
-Extreme StressEnvelope::max_tension(MPI_Comm comm) const
+std::vector<std::int32_t>
+StressEnvelope::candidates(std::span<const std::int32_t> subset) const
 {
-  return global_extreme(comm, _max, _t_max, _x, _in_region, 1.0);
+  std::vector<std::int32_t> c;
+  if (subset.empty())
+  {
+    for (std::size_t i = 0; i < _in_region.size(); ++i)
+    {
+      if (_in_region[i])
+        c.push_back(static_cast<std::int32_t>(i));
+    }
+  }
+  else
+    c.assign(subset.begin(), subset.end());
+  return c;
 }
 
-Extreme StressEnvelope::max_compression(MPI_Comm comm) const
+Extreme StressEnvelope::max_tension(MPI_Comm comm,
+                                    std::span<const std::int32_t> subset) const
 {
-  return global_extreme(comm, _min, _t_min, _x, _in_region, -1.0);
+  return global_extreme(comm, _max, _t_max, _x, candidates(subset), 1.0);
+}
+
+Extreme
+StressEnvelope::max_compression(MPI_Comm comm,
+                                std::span<const std::int32_t> subset) const
+{
+  return global_extreme(comm, _min, _t_min, _x, candidates(subset), -1.0);
 }
 } // namespace damseis::output

@@ -33,17 +33,32 @@ public:
   /// Updates with the owned stress values `s` (layout of S, owned part).
   void update(std::span<const double> s, double t);
 
-  /// Extreme tension (largest max principal) over the region; collective.
-  Extreme max_tension(MPI_Comm comm) const;
+  /// Extreme tension (largest max principal) over the region, or over the
+  /// owned points listed in `subset`; collective.
+  Extreme max_tension(MPI_Comm comm,
+                      std::span<const std::int32_t> subset = {}) const;
   /// Extreme compression (most negative min principal); collective.
-  Extreme max_compression(MPI_Comm comm) const;
+  Extreme max_compression(MPI_Comm comm,
+                          std::span<const std::int32_t> subset = {}) const;
+  /// Coordinates of owned point i.
+  const std::array<double, 3>& point(std::int32_t i) const { return _x[i]; }
 
   /// Per owned point: envelope values (+-infinity outside the region).
   std::span<const double> max_principal() const { return _max; }
   std::span<const double> min_principal() const { return _min; }
+  std::span<const double> max_times() const { return _t_max; }
+  std::span<const double> min_times() const { return _t_min; }
+
+  /// Restores envelope values and times (e.g. from a checkpoint); the
+  /// arrays hold the owned points in order.
+  void restore(std::span<const double> max, std::span<const double> t_max,
+               std::span<const double> min, std::span<const double> t_min);
   int components() const { return _ncomp; }
 
 private:
+  std::vector<std::int32_t>
+  candidates(std::span<const std::int32_t> subset) const;
+
   int _ncomp;
   std::vector<double> _max, _min, _t_max, _t_min;
   std::vector<std::array<double, 3>> _x;

@@ -1,0 +1,551 @@
+#include "linear_seismic.h"
+#include "checkpoint.h"
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <damseis/fem/modal.h>
+#include <damseis/geometry/tags.h>
+#include <damseis/output/face_points.h>
+#include <damseis/output/field_writer.h>
+#include <damseis/output/point_probe.h>
+#include <damseis/output/progress.h>
+#include <damseis/output/stress_envelope.h>
+#include <dolfinx/common/IndexMap.h>
+#include <dolfinx/fem/DofMap.h>
+#include <dolfinx/la/petsc.h>
+#include <dolfinx/mesh/Mesh.h>
+#include <dolfinx/mesh/MeshTags.h>
+#include <fstream>
+#include <sstream>
+
+namespace damseis::analysis
+{
+namespace
+{
+using dolfinx::la::petsc::Matrix;
+using dolfinx::la::petsc::Vector;
+using nlohmann::json;
+using Clock = std::chrono::steady_clock;
+
+volatile std::sig_atomic_t stop_requested = 0;
+extern "C" void request_stop(int)
+{
+  stop_requested = 1;
+}
+
+double seconds_since(Clock::time_point t0)
+{
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+/// A new vector with the layout of the columns (or rows) of A.
+Vector column_vector(Mat A)
+{
+  Vec x;
+  MatCreateVecs(A, &x, nullptr);
+  VecSet(x, 0.0);
+  return Vector(x, false);
+}
+
+Vector row_vector(Mat A)
+{
+  Vec x;
+  MatCreateVecs(A, nullptr, &x);
+  VecSet(x, 0.0);
+  return Vector(x, false);
+}
+
+/// Copies `x` (owned values) into the Function `u` and updates its ghosts.
+void to_function(Vec x, dolfinx::fem::Function<double>& u)
+{
+  const double* a = nullptr;
+  VecGetArrayRead(x, &a);
+  std::span<double> y = u.x()->mutable_array();
+  const auto& map = *u.function_space()->dofmap()->index_map;
+  const int bs = u.function_space()->dofmap()->index_map_bs();
+  std::copy_n(a, map.size_local() * bs, y.begin());
+  VecRestoreArrayRead(x, &a);
+  u.x()->scatter_fwd();
+}
+
+std::vector<double> owned_values(Vec x)
+{
+  PetscInt n = 0;
+  VecGetLocalSize(x, &n);
+  const double* a = nullptr;
+  VecGetArrayRead(x, &a);
+  std::vector<double> v(a, a + n);
+  VecRestoreArrayRead(x, &a);
+  return v;
+}
+
+void set_owned_values(Vec x, const std::vector<double>& v)
+{
+  double* a = nullptr;
+  VecGetArray(x, &a);
+  std::copy(v.begin(), v.end(), a);
+  VecRestoreArray(x, &a);
+}
+
+json extreme_json(const output::Extreme& e, int dim)
+{
+  json j = {{"value", e.value * 1e-6}, {"x", e.x[0]}, {"y", e.x[1]}};
+  if (dim == 3)
+    j["z"] = e.x[2];
+  j["t"] = e.t;
+  return j;
+}
+
+std::vector<std::int32_t> region_cells(const geometry::Model& m, int region)
+{
+  std::vector<std::int32_t> cells;
+  const auto& tags = *m.cell_tags;
+  for (std::size_t i = 0; i < tags.indices().size(); ++i)
+  {
+    if (tags.values()[i] == region)
+      cells.push_back(tags.indices()[i]);
+  }
+  return cells;
+}
+
+void write_modes(fem::ElasticModel& fe, const fem::Modes& modes,
+                 const std::filesystem::path& file)
+{
+  dolfinx::fem::Function<double> u(fe.V()), u1(fe.output_space("u_vertex"));
+  u1.name = "mode_shape";
+  dolfinx::io::XDMFFile xdmf(fe.mesh()->comm(), file, "w");
+  xdmf.write_mesh(*fe.mesh());
+  for (std::size_t i = 0; i < modes.shapes.size(); ++i)
+  {
+    to_function(modes.shapes[i], u);
+    u1.interpolate(u);
+    xdmf.write_function(u1, static_cast<double>(i + 1));
+  }
+  xdmf.close();
+}
+
+/// Writes the envelope values of the given owned points of every rank into
+/// a CSV file on rank 0.
+void write_face_csv(MPI_Comm comm, const output::StressEnvelope& env,
+                    std::span<const std::int32_t> points,
+                    const std::filesystem::path& file)
+{
+  std::vector<double> local;
+  for (std::int32_t p : points)
+  {
+    const auto& x = env.point(p);
+    local.insert(local.end(),
+                 {x[0], x[1], x[2], env.max_principal()[p] * 1e-6,
+                  env.max_times()[p], env.min_principal()[p] * 1e-6,
+                  env.min_times()[p]});
+  }
+  int rank = 0, size = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &size);
+  int n = static_cast<int>(local.size());
+  std::vector<int> counts(size), offsets(size + 1, 0);
+  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
+  for (int r = 0; r < size; ++r)
+    offsets[r + 1] = offsets[r] + counts[r];
+  std::vector<double> all(rank == 0 ? offsets[size] : 0);
+  MPI_Gatherv(local.data(), n, MPI_DOUBLE, all.data(), counts.data(),
+              offsets.data(), MPI_DOUBLE, 0, comm);
+  if (rank != 0)
+    return;
+  std::ofstream csv(file);
+  csv << "x_m,y_m,z_m,max_principal_mpa,t_max_s,min_principal_mpa,t_min_s\n";
+  csv.precision(8);
+  for (std::size_t i = 0; i < all.size(); i += 7)
+  {
+    for (int k = 0; k < 7; ++k)
+      csv << all[i + k] << (k < 6 ? "," : "\n");
+  }
+}
+} // namespace
+
+json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
+                        const std::filesystem::path& out_dir,
+                        const std::string& case_text)
+{
+  const auto wall_start = Clock::now();
+  const auto model = fe.model();
+  MPI_Comm comm = model.mesh->comm();
+  int rank = 0, ranks = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &ranks);
+  const int dim = fe.dim();
+  const std::int64_t n_cells =
+      model.mesh->topology().index_map(dim)->size_global();
+  const std::int64_t n_dofs = fe.V()->dofmap()->index_map->size_global() * dim;
+  output::print(comm, "damseis: " + std::to_string(n_cells) + " cells, " +
+                          std::to_string(n_dofs) + " dofs, P" +
+                          std::to_string(fe.degree()) + ", " +
+                          std::to_string(ranks) + " rank(s)");
+
+  const bool wet = s.reservoir.depth() > 0.0;
+  const fem::Reservoir* added = s.westergaard && wet ? &s.reservoir : nullptr;
+  Matrix K(fe.assemble_stiffness(), false);
+  Matrix M(fe.assemble_mass(added), false);
+
+  // Static stage: dead weight and hydrostatic pressure.
+  std::array<double, 3> g = {0, 0, 0};
+  g[dim - 1] = -s.gravity;
+  Vector F(fe.assemble_gravity(g), false);
+  if (wet)
+  {
+    Vector H(fe.assemble_hydrostatic(s.reservoir), false);
+    VecAXPY(F.vec(), 1.0, H.vec());
+  }
+  Vector u_static = column_vector(K.mat());
+  {
+    fem::DirectSolver solver(comm, s.factorization);
+    solver.factorize(K.mat());
+    solver.solve(F.vec(), u_static.vec());
+  }
+
+  // Modal analysis, with and without the added mass.
+  fem::Modes modes = fem::solve_modes(K.mat(), M.mat(), s.modes);
+  std::vector<double> dry_hz = modes.frequencies_hz;
+  if (added)
+  {
+    Matrix M0(fe.assemble_mass(nullptr), false);
+    dry_hz = fem::solve_modes(K.mat(), M0.mat(), s.modes).frequencies_hz;
+  }
+  std::ostringstream freqs;
+  for (double f : modes.frequencies_hz)
+    freqs << " " << std::round(f * 1000) / 1000;
+  output::print(comm, "natural frequencies [Hz]:" + freqs.str());
+
+  // Rayleigh damping.
+  double f1, f2;
+  if (s.damping_frequencies_hz.size() == 2)
+  {
+    f1 = s.damping_frequencies_hz[0];
+    f2 = s.damping_frequencies_hz[1];
+  }
+  else
+  {
+    f1 = modes.frequencies_hz[s.damping_modes[0] - 1];
+    f2 = modes.frequencies_hz[s.damping_modes[1] - 1];
+  }
+  const auto damping =
+      dynamics::RayleighDamping::from_ratio(s.damping_ratio, f1, f2);
+
+  // Dynamic stage: displacement relative to the base under the ground
+  // acceleration, M a + C v + K u = -M sum_c r_c a_gc(t). The added mass
+  // multiplies the total acceleration, so it is part of M here.
+  dynamics::LinearNewmark newmark(M.mat(), K.mat(), damping, s.scheme,
+                                  s.factorization);
+  std::vector<int> active;
+  std::vector<Vector> influence, load;
+  for (int c = 0; c < dim; ++c)
+  {
+    if (!s.motion[c].active)
+      continue;
+    active.push_back(c);
+    influence.emplace_back(fe.influence(c), false);
+    load.push_back(column_vector(K.mat()));
+    MatMult(M.mat(), influence.back().vec(), load.back().vec());
+    VecScale(load.back().vec(), -1.0);
+  }
+  Vector f = column_vector(K.mat());
+  auto set_load = [&](int k)
+  {
+    VecSet(f.vec(), 0.0);
+    for (std::size_t i = 0; i < active.size(); ++i)
+      VecAXPY(f.vec(), s.motion[active[i]].acceleration[k], load[i].vec());
+  };
+
+  // Outputs: every input check has passed by now.
+  std::filesystem::create_directories(out_dir);
+  if (rank == 0)
+    std::ofstream(out_dir / "case_used.toml") << case_text;
+  write_modes(fe, modes, out_dir / "modes.xdmf");
+
+  // Stress points, envelopes (dam only) and faces.
+  Matrix B(fe.assemble_stress_operator(), false);
+  Vector s_static = row_vector(B.mat()), s_field = row_vector(B.mat());
+  MatMult(B.mat(), u_static.vec(), s_static.vec());
+  const auto dam_cells = region_cells(model, tags::dam);
+  output::StressEnvelope envelope(*fe.S(), dam_cells);
+  std::vector<std::vector<std::int32_t>> face_pts;
+  for (const auto& [name, tag] : s.faces)
+    face_pts.push_back(output::face_points(*fe.S(), *model.facet_tags, tag));
+
+  output::PointProbe crest(*fe.V(), s.crest_point);
+  output::PointProbe base(*fe.V(), s.base_point);
+  const auto crest_static = crest.value_on_all(u_static.vec());
+  const auto base_static = base.value_on_all(u_static.vec());
+  const int n = s.steps;
+  const double dt = s.scheme.dt;
+  // Per step: crest then base displacement components (owner rank only).
+  std::vector<double> hist(2 * dim * (n + 1), 0.0);
+
+  // Start at rest: a = -sum_c r_c a_gc(0) satisfies M a = f(0) exactly, also
+  // where M is singular (massless foundation, fixed dofs).
+  int k0 = 0;
+  const std::filesystem::path ckpt_dir = out_dir / "checkpoint";
+  const std::vector<double> coords = fe.V()->tabulate_dof_coordinates(false);
+  const std::uint64_t print = fingerprint(coords);
+  std::optional<CheckpointData> restart;
+  if (s.restart)
+    restart = read_checkpoint(comm, ckpt_dir, print);
+  if (restart)
+  {
+    k0 = restart->step;
+    Vector u = column_vector(K.mat()), v = column_vector(K.mat()),
+           a = column_vector(K.mat());
+    set_owned_values(u.vec(), restart->arrays.at("u"));
+    set_owned_values(v.vec(), restart->arrays.at("v"));
+    set_owned_values(a.vec(), restart->arrays.at("a"));
+    set_load(k0);
+    newmark.set_state(u.vec(), v.vec(), a.vec(), f.vec());
+    envelope.restore(
+        restart->arrays.at("env_max"), restart->arrays.at("env_t_max"),
+        restart->arrays.at("env_min"), restart->arrays.at("env_t_min"));
+    hist = restart->arrays.at("history");
+    output::print(comm, "restarting from the checkpoint at step " +
+                            std::to_string(k0));
+  }
+  else
+  {
+    Vector zero = column_vector(K.mat()), a0 = column_vector(K.mat());
+    for (std::size_t i = 0; i < active.size(); ++i)
+    {
+      VecAXPY(a0.vec(), -s.motion[active[i]].acceleration[0],
+              influence[i].vec());
+    }
+    set_load(0);
+    newmark.set_state(zero.vec(), zero.vec(), a0.vec(), f.vec());
+  }
+
+  output::FieldWriter writer(
+      fe,
+      out_dir / (k0 == 0 ? std::string("fields.xdmf")
+                         : "fields_from_step" + std::to_string(k0) + ".xdmf"));
+  dolfinx::fem::Function<double> u_fn(fe.V());
+  Vector u_out = column_vector(K.mat());
+
+  auto record_state = [&](int k, double t, Vec ud)
+  {
+    MatMult(B.mat(), ud, s_field.vec());
+    if (s.stress_total)
+      VecAXPY(s_field.vec(), 1.0, s_static.vec());
+    const double* sa = nullptr;
+    PetscInt ns = 0;
+    VecGetLocalSize(s_field.vec(), &ns);
+    VecGetArrayRead(s_field.vec(), &sa);
+    envelope.update(std::span<const double>(sa, ns), t);
+    const auto c = crest.value(ud), b = base.value(ud);
+    for (int i = 0; i < dim; ++i)
+    {
+      hist[2 * dim * k + i] = c[i];
+      hist[2 * dim * k + dim + i] = b[i];
+    }
+    if (k % s.output_every == 0)
+    {
+      VecCopy(ud, u_out.vec());
+      if (s.stress_total)
+        VecAXPY(u_out.vec(), 1.0, u_static.vec());
+      to_function(u_out.vec(), u_fn);
+      writer.write(u_fn, std::span<const double>(sa, ns), t);
+    }
+    VecRestoreArrayRead(s_field.vec(), &sa);
+  };
+  auto checkpoint = [&](int k)
+  {
+    CheckpointData data;
+    data.step = k;
+    data.arrays = {{"u", owned_values(newmark.u())},
+                   {"v", owned_values(newmark.v())},
+                   {"a", owned_values(newmark.a())},
+                   {"history", hist}};
+    auto span_vec = [](std::span<const double> x)
+    { return std::vector<double>(x.begin(), x.end()); };
+    data.arrays["env_max"] = span_vec(envelope.max_principal());
+    data.arrays["env_t_max"] = span_vec(envelope.max_times());
+    data.arrays["env_min"] = span_vec(envelope.min_principal());
+    data.arrays["env_t_min"] = span_vec(envelope.min_times());
+    write_checkpoint(comm, ckpt_dir, data, print);
+  };
+
+  output::print(comm, "time history: " + std::to_string(n) + " steps of " +
+                          std::to_string(dt) + " s, factorisation " +
+                          newmark.solver().name());
+  if (k0 == 0)
+    record_state(0, 0.0, newmark.u());
+  stop_requested = 0;
+  auto old_int = std::signal(SIGINT, request_stop);
+  auto old_term = std::signal(SIGTERM, request_stop);
+  output::Progress progress(comm, n - k0);
+  const auto loop_start = Clock::now();
+  for (int k = k0 + 1; k <= n; ++k)
+  {
+    set_load(k);
+    newmark.step(f.vec());
+    record_state(k, k * dt, newmark.u());
+    progress.report(k - k0, k * dt);
+    int stop = stop_requested || k == s.stop_at_step, any_stop = 0;
+    MPI_Allreduce(&stop, &any_stop, 1, MPI_INT, MPI_MAX, comm);
+    if (any_stop ||
+        (s.checkpoint_every > 0 && k % s.checkpoint_every == 0 && k < n))
+    {
+      checkpoint(k);
+    }
+    if (any_stop)
+    {
+      std::signal(SIGINT, old_int);
+      std::signal(SIGTERM, old_term);
+      throw Interrupted("stopped at step " + std::to_string(k) +
+                        "; checkpoint written to " + ckpt_dir.string() +
+                        "; resume with --set run.restart=true");
+    }
+  }
+  std::signal(SIGINT, old_int);
+  std::signal(SIGTERM, old_term);
+  const double loop_seconds = seconds_since(loop_start);
+  output::reduce_history(comm, hist);
+
+  // Crest history relative to the base point.
+  const char* axis = "xyz";
+  std::array<double, 3> peak = {0, 0, 0}, peak_t = {0, 0, 0};
+  double peak_h = 0.0, peak_h_t = 0.0;
+  {
+    std::ofstream csv;
+    if (rank == 0)
+    {
+      csv.open(out_dir / "crest.csv");
+      csv << "t_s";
+      for (int i = 0; i < dim; ++i)
+        csv << ",u" << axis[i] << "_m";
+      for (int i = 0; i < dim; ++i)
+        csv << ",u" << axis[i] << "_total_m";
+      csv << "\n";
+      csv.precision(10);
+    }
+    for (int k = 0; k <= n; ++k)
+    {
+      std::array<double, 3> u = {0, 0, 0};
+      double horizontal = 0.0;
+      for (int i = 0; i < dim; ++i)
+      {
+        u[i] = hist[2 * dim * k + i] - hist[2 * dim * k + dim + i];
+        if (std::abs(u[i]) > std::abs(peak[i]))
+        {
+          peak[i] = u[i];
+          peak_t[i] = k * dt;
+        }
+        if (i < dim - 1)
+          horizontal += u[i] * u[i];
+      }
+      horizontal = std::sqrt(horizontal);
+      if (dim == 2)
+        horizontal = u[0];
+      if (std::abs(horizontal) > std::abs(peak_h))
+      {
+        peak_h = horizontal;
+        peak_h_t = k * dt;
+      }
+      if (rank == 0)
+      {
+        csv << k * dt;
+        for (int i = 0; i < dim; ++i)
+          csv << "," << u[i];
+        for (int i = 0; i < dim; ++i)
+          csv << "," << u[i] + crest_static[i] - base_static[i];
+        csv << "\n";
+      }
+    }
+  }
+
+  output::write_envelopes(fe, envelope, out_dir / "envelopes.xdmf");
+  json faces = json::object();
+  for (std::size_t i = 0; i < s.faces.size(); ++i)
+  {
+    const std::string& name = s.faces[i].first;
+    write_face_csv(comm, envelope, face_pts[i],
+                   out_dir / ("face_" + name + ".csv"));
+    faces[name] = {
+        {"max_principal_tension_mpa",
+         extreme_json(envelope.max_tension(comm, face_pts[i]), dim)},
+        {"max_principal_compression_mpa",
+         extreme_json(envelope.max_compression(comm, face_pts[i]), dim)}};
+  }
+  const auto tension = envelope.max_tension(comm);
+  const auto compression = envelope.max_compression(comm);
+
+  json by_component = json::object();
+  json statics = json::array();
+  json motion = json::object();
+  for (int i = 0; i < dim; ++i)
+  {
+    by_component[std::string(1, axis[i])] = {{"value", peak[i]},
+                                             {"t", peak_t[i]}};
+    statics.push_back(crest_static[i] - base_static[i]);
+    motion[std::string(1, axis[i])] = {
+        {"record", s.motion[i].record},
+        {"peak_g", s.motion[i].active ? s.motion[i].peak_g : 0.0}};
+  }
+  json summary = {
+      {"n_cells", n_cells},
+      {"n_dofs", n_dofs},
+      {"mesh_order", fe.degree()},
+      {"steps", n},
+      {"dt_s", dt},
+      {"frequencies_hz", modes.frequencies_hz},
+      {"frequencies_dry_hz", dry_hz},
+      {"added_mass", added != nullptr},
+      {"damping",
+       {{"ratio", s.damping_ratio},
+        {"f1_hz", f1},
+        {"f2_hz", f2},
+        {"a_mass", damping.a_mass},
+        {"b_stiffness", damping.b_stiffness}}},
+      {"stress", s.stress_total ? "total" : "seismic"},
+      {"crest_point",
+       std::vector<double>(crest.node().begin(), crest.node().begin() + dim)},
+      {"crest_static_m", statics},
+      {"crest_displacement_max_m", {{"value", peak_h}, {"t", peak_h_t}}},
+      {"crest_displacement_max_by_component_m", by_component},
+      {"max_principal_tension_mpa", extreme_json(tension, dim)},
+      {"max_principal_compression_mpa", extreme_json(compression, dim)},
+      {"faces", faces},
+      {"ground_motion", motion},
+      {"solver", newmark.solver().name()},
+      {"factorization_seconds", newmark.solver().factor_seconds()},
+      {"time_loop_seconds", loop_seconds},
+      {"seconds_per_step", loop_seconds / std::max(1, n - k0)},
+      {"restarted_from_step", k0},
+      {"mpi_ranks", ranks},
+  };
+  summary["wall_seconds"] = seconds_since(wall_start);
+  output::print(comm, "max tension " + std::to_string(tension.value * 1e-6) +
+                          " MPa, max compression " +
+                          std::to_string(compression.value * 1e-6) +
+                          " MPa, max crest displacement " +
+                          std::to_string(peak_h * 100) + " cm");
+  return summary;
+}
+} // namespace damseis::analysis
+
+namespace damseis::analysis
+{
+void write_summary_and_plots(MPI_Comm comm, const nlohmann::json& summary,
+                             const std::filesystem::path& out_dir, bool plots,
+                             const std::string& plot_script)
+{
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  if (rank != 0)
+    return;
+  std::ofstream(out_dir / "summary.json") << summary.dump(2) << "\n";
+  if (plots)
+  {
+    const std::string cmd = std::string(DAMSEIS_PYTHON) + " " +
+                            DAMSEIS_SOURCE_DIR + "/scripts/" + plot_script +
+                            " \"" + out_dir.string() + "\"";
+    if (std::system(cmd.c_str()) != 0)
+      std::fprintf(stderr, "warning: plotting failed: %s\n", cmd.c_str());
+  }
+}
+} // namespace damseis::analysis

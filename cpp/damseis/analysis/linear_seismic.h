@@ -1,0 +1,45 @@
+// The linear seismic analysis of a dam model, whatever its geometry (2D
+// section or 3D dam): static stage (dead weight, hydrostatic), modal
+// analysis with and without added mass, HHT/Newmark time history under base
+// acceleration, and the outputs (XDMF fields and envelopes, face extremes,
+// crest history, summary, checkpoints).
+#pragma once
+
+#include "seismic_settings.h"
+#include <damseis/fem/elastic_model.h>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+namespace damseis::analysis
+{
+/// Runs the analysis on `fe` (materials and fixed boundaries already set)
+/// and writes into `out_dir` (created): summary.json, crest.csv,
+/// fields.xdmf, envelopes.xdmf, modes.xdmf, face_<name>.csv, case_used.toml.
+/// Returns the summary. Collective.
+///
+/// With settings.checkpoint_every > 0 the state is saved every so many steps
+/// in out_dir/checkpoint; with settings.restart the run resumes from there
+/// (fields written after a restart go to fields_from_step<k>.xdmf). On
+/// SIGINT/SIGTERM, or at settings.stop_at_step, the run writes a checkpoint
+/// at the end of the current step and throws Interrupted.
+nlohmann::json run_linear_seismic(fem::ElasticModel& fe,
+                                  const SeismicSettings& settings,
+                                  const std::filesystem::path& out_dir,
+                                  const std::string& case_text);
+
+/// Thrown when a run was stopped by a signal after writing a checkpoint.
+struct Interrupted : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+} // namespace damseis::analysis
+
+namespace damseis::analysis
+{
+/// Writes summary.json on rank 0 and, if `plots`, runs the plotting script
+/// `scripts/<plot_script>` of the source tree on the output folder (a
+/// failure to plot is a warning, not an error).
+void write_summary_and_plots(MPI_Comm comm, const nlohmann::json& summary,
+                             const std::filesystem::path& out_dir, bool plots,
+                             const std::string& plot_script);
+} // namespace damseis::analysis

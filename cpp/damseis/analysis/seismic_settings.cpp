@@ -1,0 +1,233 @@
+#include "seismic_settings.h"
+#include <cmath>
+#include <damseis/motion/record.h>
+#include <sstream>
+
+namespace damseis::analysis
+{
+void add_seismic_keys(input::Schema& s,
+                      const std::vector<Direction>& directions,
+                      const std::string& crest_point,
+                      const std::string& base_point)
+{
+  s.real("loads.gravity", "9.81", "m/s2",
+         "gravitational acceleration for the dead weight")
+      .at_least(0);
+  s.real("reservoir.level", "0.0", "m",
+         "water level (elevation of the free surface; 0: empty)")
+      .at_least(0);
+  s.real("reservoir.rho_w", "1000", "kg/m3", "water density").above(0);
+  s.boolean("reservoir.westergaard", "true", "-",
+            "Westergaard added mass on the wetted upstream face");
+  s.boolean("reservoir.load_floor", "false", "-",
+            "hydrostatic pressure also on the reservoir floor (with a "
+            "foundation)");
+  s.integer("modal.count", "6", "-", "number of natural modes computed")
+      .between(1, 200);
+  s.real("damping.ratio", "0.05", "-", "Rayleigh damping ratio").between(0, 1);
+  s.integer_array("damping.modes", "[1, 3]", "-",
+                  "the two modes (of the system with added mass) where the "
+                  "ratio is exact");
+  s.real_array("damping.frequencies_hz", "[]", "Hz",
+               "two frequencies instead of damping.modes (empty: use the "
+               "modes)")
+      .above(0);
+  s.real("time.dt", "0.01", "s", "time step").above(0);
+  s.real("time.duration", "10.0", "s",
+         "analysis duration (0: the longest record's length)")
+      .at_least(0);
+  s.real("time.hht_alpha", "0.0", "-",
+         "HHT alpha in [-1/3, 0] (0: Newmark average acceleration)")
+      .between(-1.0 / 3.0, 0);
+  for (const Direction& d : directions)
+  {
+    const std::string p = "motion." + d.name;
+    s.string(p + ".record", d.default_record, "-",
+             d.name +
+                 " record: PEER .at2 or one/two-column text (empty: none)");
+    s.string(p + ".units", "g", "-", "units of the record values",
+             {"g", "m/s2"});
+    s.string(p + ".format", "auto", "-", "record format",
+             {"auto", "at2", "columns"});
+    s.real(p + ".dt", "0.0", "s", "sample interval of a one-column record")
+        .at_least(0);
+    std::ostringstream peak;
+    peak << d.default_peak_g;
+    s.real(p + ".peak_g", peak.str(), "g",
+           "peak acceleration after scaling (0: unscaled)")
+        .at_least(0);
+  }
+  s.integer("output.every", "10", "-", "steps between XDMF field outputs")
+      .at_least(1);
+  s.string("output.stress", "total", "-", "stresses in envelopes and summary",
+           {"total", "seismic"});
+  s.real_array("output.crest_point", crest_point, "m",
+               "point whose displacement history is recorded");
+  s.real_array("output.base_point", base_point, "m",
+               "reference point: crest displacement is relative to it");
+  s.boolean("output.plots", "true", "-",
+            "write PNG plots (needs python3-matplotlib)");
+  s.integer("run.checkpoint_every", "0", "-",
+            "steps between checkpoints (0: none)")
+      .at_least(0);
+  s.boolean("run.restart", "false", "-",
+            "resume from the checkpoint in the output folder");
+  s.integer("run.stop_at_step", "0", "-",
+            "write a checkpoint and stop at this step (0: run to the end)")
+      .at_least(0);
+  s.string("solver.factorization", "auto", "-",
+           "sparse factorisation (auto: petsc serial, mumps in parallel)",
+           {"auto", "petsc", "mumps", "cholmod"});
+}
+
+namespace
+{
+GroundMotion read_motion(const input::Case& c, const std::string& p, double dt,
+                         double duration)
+{
+  GroundMotion gm;
+  if (c.string(p + ".record").empty())
+    return gm;
+  const auto file = c.path(p + ".record");
+  motion::Record r;
+  try
+  {
+    r = motion::read_record(file, motion::parse_units(c.string(p + ".units")),
+                            motion::parse_format(c.string(p + ".format")),
+                            c.real(p + ".dt"));
+  }
+  catch (const motion::RecordError& e)
+  {
+    // The record error already says what is wrong and what is expected.
+    throw input::InputError(c.file().string() + ": " + p +
+                            ".record: " + e.what());
+  }
+  gm.active = true;
+  gm.record = file.string();
+  gm.description = r.description;
+  // duration < 0: the record's own length.
+  gm.acceleration =
+      motion::resample(r, dt, duration < 0 ? r.duration() : duration);
+  gm.peak_g = c.real(p + ".peak_g");
+  if (gm.peak_g > 0.0)
+  {
+    try
+    {
+      motion::scale_to_peak(gm.acceleration,
+                            gm.peak_g * motion::standard_gravity);
+    }
+    catch (const motion::RecordError& e)
+    {
+      throw input::InputError(c.file().string() + ": " + p +
+                              ".record: " + e.what());
+    }
+  }
+  else
+  {
+    double peak = 0.0;
+    for (double a : gm.acceleration)
+      peak = std::max(peak, std::abs(a));
+    gm.peak_g = peak / motion::standard_gravity;
+  }
+  return gm;
+}
+
+std::array<double, 3> point(const input::Case& c, const std::string& key,
+                            int dim)
+{
+  auto v = c.reals(key);
+  if (static_cast<int>(v.size()) != dim)
+  {
+    c.fail(key, "has " + std::to_string(v.size()) + " coordinates",
+           std::to_string(dim) + " coordinates");
+  }
+  std::array<double, 3> x = {0, 0, 0};
+  std::copy(v.begin(), v.end(), x.begin());
+  return x;
+}
+} // namespace
+
+SeismicSettings read_seismic_settings(const input::Case& c,
+                                      const std::vector<Direction>& directions,
+                                      int dim, double crest_elevation)
+{
+  SeismicSettings g;
+  g.gravity = c.real("loads.gravity");
+  g.reservoir.level = c.real("reservoir.level");
+  g.reservoir.bottom = 0.0;
+  g.reservoir.rho_w = c.real("reservoir.rho_w");
+  g.reservoir.g = g.gravity;
+  g.reservoir.load_floor = c.boolean("reservoir.load_floor");
+  g.westergaard = c.boolean("reservoir.westergaard");
+  if (g.reservoir.level > crest_elevation)
+  {
+    std::ostringstream problem, expected;
+    problem << "= " << g.reservoir.level << " m is above the crest";
+    expected << "a level between 0 and the crest elevation " << crest_elevation
+             << " m";
+    c.fail("reservoir.level", problem.str(), expected.str());
+  }
+
+  g.modes = static_cast<int>(c.integer("modal.count"));
+  g.damping_ratio = c.real("damping.ratio");
+  g.damping_modes = c.integers("damping.modes");
+  g.damping_frequencies_hz = c.reals("damping.frequencies_hz");
+  if (!g.damping_frequencies_hz.empty())
+  {
+    if (g.damping_frequencies_hz.size() != 2 ||
+        g.damping_frequencies_hz[0] == g.damping_frequencies_hz[1])
+    {
+      c.fail("damping.frequencies_hz", "must hold two distinct frequencies",
+             "[f1, f2] in Hz, or [] to use damping.modes");
+    }
+  }
+  else
+  {
+    const auto& m = g.damping_modes;
+    if (m.size() != 2 || m[0] < 1 || m[1] < 1 || m[0] == m[1] ||
+        m[0] > g.modes || m[1] > g.modes)
+    {
+      c.fail("damping.modes", "must name two distinct computed modes",
+             "two mode numbers between 1 and modal.count");
+    }
+  }
+
+  g.scheme.dt = c.real("time.dt");
+  g.scheme.alpha = c.real("time.hht_alpha");
+  const double duration = c.real("time.duration");
+  bool any = false;
+  for (const Direction& d : directions)
+  {
+    GroundMotion m = read_motion(c, "motion." + d.name, g.scheme.dt,
+                                 duration > 0 ? duration : -1.0);
+    any = any || m.active;
+    g.motion[d.component] = std::move(m);
+  }
+  if (!any)
+  {
+    c.fail("motion." + directions.front().name + ".record",
+           "is empty, and so are the other components",
+           "at least one ground-motion record");
+  }
+  // With duration 0, shorter records are padded with zeros to the longest.
+  std::size_t samples = 0;
+  for (const GroundMotion& m : g.motion)
+    samples = std::max(samples, m.acceleration.size());
+  if (samples < 2)
+    c.fail("time.duration", "is shorter than one step", "duration >= time.dt");
+  g.steps = static_cast<int>(samples) - 1;
+  for (GroundMotion& m : g.motion)
+    m.acceleration.resize(samples, 0.0);
+
+  g.output_every = static_cast<int>(c.integer("output.every"));
+  g.stress_total = c.string("output.stress") == "total";
+  g.crest_point = point(c, "output.crest_point", dim);
+  g.base_point = point(c, "output.base_point", dim);
+  g.plots = c.boolean("output.plots");
+  g.checkpoint_every = static_cast<int>(c.integer("run.checkpoint_every"));
+  g.restart = c.boolean("run.restart");
+  g.stop_at_step = static_cast<int>(c.integer("run.stop_at_step"));
+  g.factorization = fem::parse_factorization(c.string("solver.factorization"));
+  return g;
+}
+} // namespace damseis::analysis

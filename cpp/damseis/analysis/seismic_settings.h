@@ -1,0 +1,75 @@
+// Settings of a linear seismic analysis that do not depend on the dam type:
+// loads, reservoir, modes, damping, time integration, ground motion, output,
+// solver, checkpoints; their case keys and their reading.
+#pragma once
+
+#include <array>
+#include <damseis/case/case.h>
+#include <damseis/dynamics/newmark.h>
+#include <damseis/fem/direct_solver.h>
+#include <damseis/fem/elastic_model.h>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace damseis::analysis
+{
+/// One component of the ground acceleration on the analysis time grid.
+struct GroundMotion
+{
+  bool active = false;
+  std::vector<double> acceleration; ///< m/s2 at t_k = k dt, k = 0..steps
+  std::string record;               ///< file it came from
+  std::string description;
+  double peak_g = 0.0; ///< peak after scaling [g]
+};
+
+/// A ground-motion direction: its case-key name and displacement component.
+struct Direction
+{
+  std::string name; ///< e.g. "horizontal", "stream", "vertical"
+  int component;    ///< 0 = x, 1 = y, 2 = z
+  std::string default_record;
+  double default_peak_g;
+};
+
+struct SeismicSettings
+{
+  fem::Reservoir reservoir;
+  bool westergaard = true;
+  double gravity = 9.81; ///< acts along -e_{dim}
+  int modes = 6;
+  double damping_ratio = 0.05;
+  std::vector<std::int64_t> damping_modes = {1, 3};
+  std::vector<double> damping_frequencies_hz; ///< overrides damping_modes
+  dynamics::TimeScheme scheme;
+  int steps = 0;
+  /// Ground motion per displacement component (inactive ones are zero).
+  std::array<GroundMotion, 3> motion;
+  int output_every = 10;
+  bool stress_total = true; ///< envelopes of static + seismic stress
+  std::array<double, 3> crest_point = {0, 0, 0};
+  std::array<double, 3> base_point = {0, 0, 0};
+  /// Faces whose envelope extremes are reported: (name, facet tag).
+  std::vector<std::pair<std::string, int>> faces;
+  int checkpoint_every = 0; ///< steps between checkpoints; 0: none
+  bool restart = false;     ///< resume from the output folder's checkpoint
+  int stop_at_step = 0;     ///< checkpoint and stop there (0: run to the end)
+  bool plots = true;
+  fem::Factorization factorization = fem::Factorization::automatic;
+};
+
+/// Adds the shared keys. `directions` are the ground-motion components the
+/// demo offers; the crest and base points default to the given coordinates.
+void add_seismic_keys(input::Schema& schema,
+                      const std::vector<Direction>& directions,
+                      const std::string& crest_point,
+                      const std::string& base_point);
+
+/// Reads and checks the shared keys, loads and scales the records. `dim` is
+/// the spatial dimension; `crest_elevation` bounds the reservoir level.
+/// Throws input::InputError naming the file and key.
+SeismicSettings read_seismic_settings(const input::Case& c,
+                                      const std::vector<Direction>& directions,
+                                      int dim, double crest_elevation);
+} // namespace damseis::analysis

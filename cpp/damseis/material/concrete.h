@@ -1,0 +1,181 @@
+/// @file concrete.h
+/// Rate-dependent concrete: consistency viscoplasticity on the
+/// Hsieh-Ting-Chen surface with a Rankine tension cut-off (Lin, Hu, Xiao &
+/// Li, section I; algorithms.md section 1). A pure material-point library,
+/// MGIS-like: integrate(old state, strain increment, dt) -> new stress, new
+/// state, consistent tangent. See README.md in this folder for the design.
+///
+/// Conventions: stress tension-positive, SI units, Voigt order
+/// (11, 22, 33, 12, 23, 13), engineering shear strains (gamma = 2 eps), the
+/// tangent is d(stress)/d(engineering strain), 6x6 row-major.
+#pragma once
+
+#include "damseis/material/htc.h"
+#include "damseis/material/rate.h"
+
+#include <array>
+#include <string>
+
+namespace damseis::material
+{
+
+using Matrix6 = std::array<double, 36>; ///< 6x6 row-major
+
+/// Which constitutive law integrate() applies (one code path for all three).
+enum class Mode
+{
+  elastic,     ///< Hooke's law, no return map
+  plastic,     ///< rate-independent plasticity: R = 1, s = 0
+  viscoplastic ///< consistency viscoplasticity: R(kappa_dot), hbar = h + s/dt
+};
+
+/// Material data. Strengths are static values; dynamic_30_percent applies
+/// the Chinese-specification convention used by the paper (E, fc0, ft0 x
+/// dynamic_factor).
+struct ConcreteParameters
+{
+  double E = 24e9;   ///< Young's modulus [Pa]
+  double nu = 0.17;  ///< Poisson's ratio
+  double fc0 = 30e6; ///< static uniaxial compressive strength [Pa] (> 0)
+  double ft0 = 2.5e6; ///< static uniaxial tensile strength [Pa] (> 0)
+  /// HTC calibration: fbc/fc, and the triaxial point (sigma_oct, tau_oct) =
+  /// (-xi0 fc, rho0 fc) on the compressive meridian.
+  double fbc_ratio = 1.15, xi0 = 1.95, rho0 = 1.61;
+  /// Use the classic constants' calibration points instead of fbc_ratio,
+  /// xi0, rho0 (with ft/fc = 0.1 the surface is exactly A = 2.0108,
+  /// B = 0.9714, C = 9.1412, D = 0.2312).
+  bool classic_shape = false;
+  double Gf = 200.0;          ///< tensile fracture energy [N/m]
+  double Gc = 20e3;           ///< compressive fracture energy [N/m]
+  double element_size = 0.1;  ///< crack-band width h [m]
+  /// The HTC surface passes through (1 + offset) ft in uniaxial tension so
+  /// that the Rankine plane, not the HTC, carries tension (no coincident
+  /// corner at the uniaxial tension point).
+  double htc_tension_offset = 0.05;
+  /// Convexity guard: the HTC tension point is kept in
+  /// [rho_min, rho_max] * fc (A, B, C >= 0 there; algorithms.md 1.2, 1.4).
+  double rho_min = 0.065, rho_max = 0.25;
+  /// Residual compressive strength ratio (numerical floor of Hc).
+  double compressive_floor = 1e-3;
+  /// Softening moduli are limited to E / snap_back_safety (see README).
+  double snap_back_safety = 1.25;
+  Mode mode = Mode::viscoplastic;
+  RateLaw rate_law = RateLaw::ceb_fip;
+  double eta_c = 0.0, eta_t = 0.0; ///< linear rate law viscosities [s]
+  /// Multipliers of the power-law reference rates kdot0 (1: the CEB-FIP
+  /// conversion described in README.md).
+  double rate_shift_c = 1.0, rate_shift_t = 1.0;
+  bool dynamic_30_percent = false;
+  double dynamic_factor = 1.3;
+  /// Local Newton: scaled residual tolerance and iteration limit.
+  double tolerance = 1e-10;
+  int max_iterations = 40;
+};
+
+/// State at a material point.
+struct State
+{
+  Vector6 stress{};         ///< [Pa]
+  Vector6 plastic_strain{}; ///< engineering shear [-]
+  double kappa_c = 0.0;     ///< equivalent viscoplastic strain, compression
+  double kappa_t = 0.0;     ///< equivalent viscoplastic strain, tension
+  double kappa_c_rate = 0.0, kappa_t_rate = 0.0; ///< [1/s], of the last step
+};
+
+/// Bits of the active set.
+enum Surface : unsigned
+{
+  htc_surface = 1u,  ///< HTC with the largest principal stress
+  htc_edge = 2u,     ///< HTC second branch (compressive meridian edge)
+  rankine_1 = 4u,    ///< sigma_1 <= ft
+  rankine_2 = 8u,    ///< sigma_2 <= ft
+  rankine_3 = 16u    ///< sigma_3 <= ft
+};
+
+/// "elastic", or the active surfaces joined by '+', e.g. "HTC+edge", "R1+R2".
+std::string active_set_name(unsigned active);
+
+/// Result of one integration.
+struct Update
+{
+  State state;
+  Matrix6 tangent{}; ///< consistent (algorithmic) tangent
+  unsigned active = 0; ///< Surface bits of the converged active set
+  int iterations = 0;  ///< local Newton iterations (all active-set passes)
+  int passes = 0;      ///< active sets tried
+  bool converged = true;
+};
+
+/// Values derived from the parameters at construction.
+struct DerivedProperties
+{
+  double E, nu, G, lambda, K; ///< elasticity (after the dynamic factor)
+  double fc0, ft0;            ///< effective initial strengths
+  double kappa_tu, kappa_cs;  ///< softening scales of Ht, Hc
+  double l_ch;                ///< E Gf / ft0^2 with the nominal ft0 [m]
+  bool tension_strength_reduced; ///< h too large: ft0 lowered (snap-back)
+  bool compression_energy_raised; ///< h too large: Gc/h not reachable
+  double uniaxial_compression_dissipation; ///< k_c = |deps_p,axial|/dkappa_c
+  RateFunction rate_c, rate_t;
+  HtcCalibration calibration; ///< the fixed points (ft_ratio unused)
+};
+
+class HtcConcrete
+{
+public:
+  /// Throws std::invalid_argument on inconsistent parameters.
+  explicit HtcConcrete(const ConcreteParameters& p);
+
+  /// Backward-Euler integration over one step. d_strain: total strain
+  /// increment; dt: time step (> 0 in viscoplastic mode with a rate law; may
+  /// be 0 otherwise). Rates kappa_dot = delta kappa / dt (0 if dt = 0).
+  Update integrate(const State& old, const Vector6& d_strain,
+                   double dt) const;
+
+  /// Strengths for given internal variables and their rates.
+  double compressive_strength(double kappa_c, double kappa_c_rate) const;
+  double tensile_strength(double kappa_t, double kappa_t_rate) const;
+  /// The HTC coefficients (A, B, C, D) relative to the current fc.
+  HtcCoefficients htc_coefficients(double kappa_c, double kappa_t,
+                                   double kappa_c_rate,
+                                   double kappa_t_rate) const;
+  /// max over all surfaces of f / fc0 (<= 0: admissible) for a stress and
+  /// internal variables, from an independent eigen-decomposition.
+  double yield_value(const Vector6& stress, double kappa_c, double kappa_t,
+                     double kappa_c_rate, double kappa_t_rate) const;
+  double yield_value(const State& s) const
+  {
+    return yield_value(s.stress, s.kappa_c, s.kappa_t, s.kappa_c_rate,
+                       s.kappa_t_rate);
+  }
+
+  const ConcreteParameters& parameters() const { return p_; }
+  const DerivedProperties& derived() const { return d_; }
+  Matrix6 elastic_tangent() const;
+
+  /// The five yield functions (stress units) and, if n != nullptr, their
+  /// gradients in principal space; s: principal stresses (descending).
+  template <class T>
+  void surfaces(const std::array<T, 3>& s, const T& kc, const T& kt,
+                const T& kcd, const T& ktd, std::array<T, 5>& phi,
+                std::array<std::array<T, 3>, 5>* n) const;
+
+private:
+  template <int M>
+  bool solve_set(unsigned set, const std::array<double, 3>& str, double kcn,
+                 double ktn, double dt, std::array<double, 9>& x,
+                 std::array<double, 9>& dsig_dtr, int& iterations) const;
+  template <class T, int M>
+  void residual(const std::array<T, 5 + M>& x, const int* ids,
+                const std::array<double, 3>& str, double kcn, double ktn,
+                double dt, std::array<T, 5 + M>& r) const;
+  template <class T>
+  T hc(const T& kc) const;
+
+  ConcreteParameters p_;
+  DerivedProperties d_{};
+  HtcFamily family_;
+  bool rate_on_ = false;
+};
+
+} // namespace damseis::material

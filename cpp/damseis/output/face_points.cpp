@@ -1,0 +1,55 @@
+#include "face_points.h"
+#include <algorithm>
+#include <dolfinx/common/IndexMap.h>
+#include <dolfinx/fem/DofMap.h>
+#include <dolfinx/mesh/Mesh.h>
+#include <dolfinx/mesh/Topology.h>
+
+namespace damseis::output
+{
+std::vector<std::int32_t>
+face_points(const dolfinx::fem::FunctionSpace& S,
+            const dolfinx::mesh::MeshTags<std::int32_t>& facet_tags, int tag)
+{
+  auto mesh = S.mesh();
+  const int tdim = mesh->topology().dim();
+  auto& topology = mesh->topology_mutable();
+  topology.create_connectivity(tdim - 1, tdim);
+  topology.create_connectivity(tdim - 1, 0);
+  topology.create_connectivity(tdim, 0);
+  auto f_to_c = topology.connectivity(tdim - 1, tdim);
+  auto f_to_v = topology.connectivity(tdim - 1, 0);
+  auto c_to_v = topology.connectivity(tdim, 0);
+  const auto& dofmap = *S.dofmap();
+  const std::int32_t num_owned = dofmap.index_map->size_local();
+
+  std::vector<std::int32_t> points;
+  for (std::size_t i = 0; i < facet_tags.indices().size(); ++i)
+  {
+    if (facet_tags.values()[i] != tag)
+      continue;
+    const std::int32_t f = facet_tags.indices()[i];
+    auto fv = f_to_v->links(f);
+    for (std::int32_t c : f_to_c->links(f))
+    {
+      auto dofs = dofmap.cell_dofs(c);
+      auto cv = c_to_v->links(c);
+      if (dofs.size() == cv.size())
+      {
+        // One point per cell vertex, in the cell's vertex order.
+        for (std::size_t k = 0; k < cv.size(); ++k)
+        {
+          if (std::find(fv.begin(), fv.end(), cv[k]) != fv.end())
+            points.push_back(dofs[k]);
+        }
+      }
+      else
+        points.insert(points.end(), dofs.begin(), dofs.end());
+    }
+  }
+  std::erase_if(points, [num_owned](std::int32_t p) { return p >= num_owned; });
+  std::sort(points.begin(), points.end());
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  return points;
+}
+} // namespace damseis::output

@@ -1,0 +1,18 @@
+// Stress points on a tagged boundary (e.g. the upstream face of a dam).
+#pragma once
+
+#include <cstdint>
+#include <dolfinx/fem/FunctionSpace.h>
+#include <dolfinx/mesh/MeshTags.h>
+#include <vector>
+
+namespace damseis::output
+{
+/// Owned points of the stress-point space S that lie on the facets tagged
+/// `tag`: for P2 models (points at cell vertices) the vertices of those
+/// facets, for P1 models (one point per cell) the centres of the adjacent
+/// cells. Sorted, unique.
+std::vector<std::int32_t>
+face_points(const dolfinx::fem::FunctionSpace& S,
+            const dolfinx::mesh::MeshTags<std::int32_t>& facet_tags, int tag);
+} // namespace damseis::output
