@@ -4,6 +4,7 @@
 #include <cmath>
 #include <csignal>
 #include <damseis/fem/modal.h>
+#include <damseis/fem/tied_dofs.h>
 #include <damseis/geometry/tags.h>
 #include <damseis/output/face_points.h>
 #include <damseis/output/field_writer.h>
@@ -16,6 +17,7 @@
 #include <dolfinx/mesh/Mesh.h>
 #include <dolfinx/mesh/MeshTags.h>
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 namespace damseis::analysis
@@ -109,6 +111,7 @@ std::vector<std::int32_t> region_cells(const geometry::Model& m, int region)
 }
 
 void write_modes(fem::ElasticModel& fe, const fem::Modes& modes,
+                 const std::function<Vec(Vec)>& full,
                  const std::filesystem::path& file)
 {
   dolfinx::fem::Function<double> u(fe.V()), u1(fe.output_space("u_vertex"));
@@ -117,7 +120,7 @@ void write_modes(fem::ElasticModel& fe, const fem::Modes& modes,
   xdmf.write_mesh(*fe.mesh());
   for (std::size_t i = 0; i < modes.shapes.size(); ++i)
   {
-    to_function(modes.shapes[i], u);
+    to_function(full(modes.shapes[i]), u);
     u1.interpolate(u);
     xdmf.write_function(u1, static_cast<double>(i + 1));
   }
@@ -165,7 +168,7 @@ void write_face_csv(MPI_Comm comm, const output::StressEnvelope& env,
 
 json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
                         const std::filesystem::path& out_dir,
-                        const std::string& case_text)
+                        const std::string& case_text, Mat tie)
 {
   const auto wall_start = Clock::now();
   const auto model = fe.model();
@@ -184,18 +187,53 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
 
   const bool wet = s.reservoir.depth() > 0.0;
   const fem::Reservoir* added = s.westergaard && wet ? &s.reservoir : nullptr;
+  // The system: all dofs, or the tied unknowns u_r with u = P u_r.
   Matrix K(fe.assemble_stiffness(), false);
   Matrix M(fe.assemble_mass(added), false);
+  if (tie)
+  {
+    for (Matrix* A : {&K, &M})
+    {
+      Mat aij, reduced;
+      MatConvert(A->mat(), MATAIJ, MAT_INITIAL_MATRIX, &aij);
+      MatPtAP(aij, tie, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &reduced);
+      MatDestroy(&aij);
+      *A = Matrix(reduced, false);
+    }
+  }
+  // Full-space vector of a system vector, and system load of a full one.
+  Vector u_full = tie ? row_vector(tie) : Vector(nullptr, false);
+  auto full = [&](Vec x) -> Vec
+  {
+    if (!tie)
+      return x;
+    MatMult(tie, x, u_full.vec());
+    return u_full.vec();
+  };
+  auto system_load = [&](Vec f_full) -> Vector
+  {
+    if (!tie)
+    {
+      Vec y;
+      VecDuplicate(f_full, &y);
+      VecCopy(f_full, y);
+      return Vector(y, false);
+    }
+    Vector y = column_vector(tie);
+    MatMultTranspose(tie, f_full, y.vec());
+    return y;
+  };
 
   // Static stage: dead weight and hydrostatic pressure.
   std::array<double, 3> g = {0, 0, 0};
   g[dim - 1] = -s.gravity;
-  Vector F(fe.assemble_gravity(g), false);
+  Vector F_full(fe.assemble_gravity(g), false);
   if (wet)
   {
     Vector H(fe.assemble_hydrostatic(s.reservoir), false);
-    VecAXPY(F.vec(), 1.0, H.vec());
+    VecAXPY(F_full.vec(), 1.0, H.vec());
   }
+  Vector F = system_load(F_full.vec());
   Vector u_static = column_vector(K.mat());
   {
     fem::DirectSolver solver(comm, s.factorization);
@@ -209,6 +247,14 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   if (added)
   {
     Matrix M0(fe.assemble_mass(nullptr), false);
+    if (tie)
+    {
+      Mat aij, reduced;
+      MatConvert(M0.mat(), MATAIJ, MAT_INITIAL_MATRIX, &aij);
+      MatPtAP(aij, tie, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &reduced);
+      MatDestroy(&aij);
+      M0 = Matrix(reduced, false);
+    }
     dry_hz = fem::solve_modes(K.mat(), M0.mat(), s.modes).frequencies_hz;
   }
   std::ostringstream freqs;
@@ -243,7 +289,11 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     if (!s.motion[c].active)
       continue;
     active.push_back(c);
-    influence.emplace_back(fe.influence(c), false);
+    Vector r(fe.influence(c), false);
+    if (tie)
+      influence.emplace_back(fem::restrict_to_tied(tie, r.vec()), false);
+    else
+      influence.push_back(std::move(r));
     load.push_back(column_vector(K.mat()));
     MatMult(M.mat(), influence.back().vec(), load.back().vec());
     VecScale(load.back().vec(), -1.0);
@@ -260,10 +310,16 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   std::filesystem::create_directories(out_dir);
   if (rank == 0)
     std::ofstream(out_dir / "case_used.toml") << case_text;
-  write_modes(fe, modes, out_dir / "modes.xdmf");
+  write_modes(fe, modes, full, out_dir / "modes.xdmf");
 
   // Stress points, envelopes (dam only) and faces.
   Matrix B(fe.assemble_stress_operator(), false);
+  if (tie)
+  {
+    Mat BP;
+    MatMatMult(B.mat(), tie, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &BP);
+    B = Matrix(BP, false);
+  }
   Vector s_static = row_vector(B.mat()), s_field = row_vector(B.mat());
   MatMult(B.mat(), u_static.vec(), s_static.vec());
   const auto dam_cells = region_cells(model, tags::dam);
@@ -274,8 +330,8 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
 
   output::PointProbe crest(*fe.V(), s.crest_point);
   output::PointProbe base(*fe.V(), s.base_point);
-  const auto crest_static = crest.value_on_all(u_static.vec());
-  const auto base_static = base.value_on_all(u_static.vec());
+  const auto crest_static = crest.value_on_all(full(u_static.vec()));
+  const auto base_static = base.value_on_all(full(u_static.vec()));
   const int n = s.steps;
   const double dt = s.scheme.dt;
   // Per step: crest then base displacement components (owner rank only).
@@ -324,7 +380,7 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
       out_dir / (k0 == 0 ? std::string("fields.xdmf")
                          : "fields_from_step" + std::to_string(k0) + ".xdmf"));
   dolfinx::fem::Function<double> u_fn(fe.V());
-  Vector u_out = column_vector(K.mat());
+  Vector u_out = tie ? row_vector(tie) : column_vector(K.mat());
 
   auto record_state = [&](int k, double t, Vec ud)
   {
@@ -336,7 +392,8 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     VecGetLocalSize(s_field.vec(), &ns);
     VecGetArrayRead(s_field.vec(), &sa);
     envelope.update(std::span<const double>(sa, ns), t);
-    const auto c = crest.value(ud), b = base.value(ud);
+    Vec uf = full(ud);
+    const auto c = crest.value(uf), b = base.value(uf);
     for (int i = 0; i < dim; ++i)
     {
       hist[2 * dim * k + i] = c[i];
@@ -344,9 +401,9 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     }
     if (k % s.output_every == 0)
     {
-      VecCopy(ud, u_out.vec());
+      VecCopy(uf, u_out.vec());
       if (s.stress_total)
-        VecAXPY(u_out.vec(), 1.0, u_static.vec());
+        VecAXPY(u_out.vec(), 1.0, full(u_static.vec()));
       to_function(u_out.vec(), u_fn);
       writer.write(u_fn, std::span<const double>(sa, ns), t);
     }

@@ -22,10 +22,14 @@ namespace damseis::analysis
 /// (fields written after a restart go to fields_from_step<k>.xdmf). On
 /// SIGINT/SIGTERM, or at settings.stop_at_step, the run writes a checkpoint
 /// at the end of the current step and throws Interrupted.
+///
+/// `tie` (optional, from fem::tie_prolongation) ties coincident dofs
+/// (bonded joints): the system is solved for u_r with u = P u_r.
 nlohmann::json run_linear_seismic(fem::ElasticModel& fe,
                                   const SeismicSettings& settings,
                                   const std::filesystem::path& out_dir,
-                                  const std::string& case_text);
+                                  const std::string& case_text,
+                                  Mat tie = nullptr);
 
 /// Thrown when a run was stopped by a signal after writing a checkpoint.
 struct Interrupted : std::runtime_error

@@ -1,0 +1,199 @@
+#include "tied_dofs.h"
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <dolfinx/common/IndexMap.h>
+#include <dolfinx/fem/DirichletBC.h>
+#include <dolfinx/fem/DofMap.h>
+#include <dolfinx/mesh/Mesh.h>
+#include <numeric>
+#include <stdexcept>
+
+namespace damseis::fem
+{
+namespace
+{
+/// Owned blocks of V on the facets with this tag.
+std::vector<std::int32_t>
+owned_blocks_on(const dolfinx::fem::FunctionSpace& V,
+                const dolfinx::mesh::MeshTags<std::int32_t>& facet_tags,
+                int tag)
+{
+  std::vector<std::int32_t> facets;
+  for (std::size_t i = 0; i < facet_tags.indices().size(); ++i)
+  {
+    if (facet_tags.values()[i] == tag)
+      facets.push_back(facet_tags.indices()[i]);
+  }
+  const int tdim = V.mesh()->topology().dim();
+  auto blocks =
+      dolfinx::fem::locate_dofs_topological(V, tdim - 1, facets, true);
+  const std::int32_t n = V.dofmap()->index_map->size_local();
+  std::erase_if(blocks, [n](std::int32_t b) { return b >= n; });
+  return blocks;
+}
+
+/// Gathers a vector of doubles from every rank onto every rank.
+std::vector<double> all_gather(MPI_Comm comm, const std::vector<double>& v)
+{
+  int size = 1;
+  MPI_Comm_size(comm, &size);
+  int n = static_cast<int>(v.size());
+  std::vector<int> counts(size), offsets(size + 1, 0);
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
+  std::partial_sum(counts.begin(), counts.end(), offsets.begin() + 1);
+  std::vector<double> all(offsets.back());
+  MPI_Allgatherv(v.data(), n, MPI_DOUBLE, all.data(), counts.data(),
+                 offsets.data(), MPI_DOUBLE, comm);
+  return all;
+}
+} // namespace
+
+Mat tie_prolongation(const dolfinx::fem::FunctionSpace& V,
+                     const dolfinx::mesh::MeshTags<std::int32_t>& facet_tags,
+                     const std::vector<std::pair<int, int>>& tag_pairs,
+                     double tol)
+{
+  MPI_Comm comm = V.mesh()->comm();
+  const auto& map = *V.dofmap()->index_map;
+  const int bs = V.dofmap()->index_map_bs();
+  const std::int32_t n_owned = map.size_local();
+  const std::int64_t first_block = map.local_range()[0];
+  const std::vector<double> x = V.tabulate_dof_coordinates(false);
+
+  // Masters (x, y, z, global block) of every rank; slaves owned here.
+  std::vector<double> masters_local;
+  std::vector<std::int32_t> slaves;
+  for (auto [first, second] : tag_pairs)
+  {
+    for (std::int32_t b : owned_blocks_on(V, facet_tags, first))
+    {
+      masters_local.insert(masters_local.end(),
+                           {x[3 * b], x[3 * b + 1], x[3 * b + 2],
+                            static_cast<double>(first_block + b)});
+    }
+    auto s = owned_blocks_on(V, facet_tags, second);
+    slaves.insert(slaves.end(), s.begin(), s.end());
+  }
+  std::sort(slaves.begin(), slaves.end());
+  slaves.erase(std::unique(slaves.begin(), slaves.end()), slaves.end());
+  const std::vector<double> masters = all_gather(comm, masters_local);
+  const std::size_t n_masters = masters.size() / 4;
+
+  // Match each slave to the coincident master (sorted by x for lookup).
+  std::vector<std::size_t> order(n_masters);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b)
+            { return masters[4 * a] < masters[4 * b]; });
+  std::vector<std::int64_t> slave_master(slaves.size(), -1);
+  for (std::size_t i = 0; i < slaves.size(); ++i)
+  {
+    const double* p = &x[3 * slaves[i]];
+    auto lo = std::lower_bound(order.begin(), order.end(), p[0] - tol,
+                               [&](std::size_t m, double v)
+                               { return masters[4 * m] < v; });
+    for (auto it = lo; it != order.end() && masters[4 * *it] <= p[0] + tol;
+         ++it)
+    {
+      const double* q = &masters[4 * *it];
+      if (std::hypot(q[0] - p[0], q[1] - p[1], q[2] - p[2]) <= tol &&
+          static_cast<std::int64_t>(q[3]) != first_block + slaves[i])
+      {
+        slave_master[i] = static_cast<std::int64_t>(q[3]);
+        break;
+      }
+    }
+    if (slave_master[i] < 0)
+    {
+      throw std::runtime_error(
+          "tied dofs: no coincident partner for the node at (" +
+          std::to_string(p[0]) + ", " + std::to_string(p[1]) + ", " +
+          std::to_string(p[2]) + ")");
+    }
+  }
+
+  // Reduced numbering: owned blocks that are not slaves, in order.
+  std::vector<std::int64_t> reduced(n_owned, -1);
+  std::int64_t n_reduced = 0;
+  for (std::int32_t b = 0, s = 0; b < n_owned; ++b)
+  {
+    if (s < static_cast<std::int32_t>(slaves.size()) && slaves[s] == b)
+    {
+      ++s;
+      continue;
+    }
+    reduced[b] = n_reduced++;
+  }
+  std::int64_t offset = 0;
+  MPI_Exscan(&n_reduced, &offset, 1, MPI_INT64_T, MPI_SUM, comm);
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  if (rank == 0)
+    offset = 0;
+  for (auto& r : reduced)
+  {
+    if (r >= 0)
+      r += offset;
+  }
+  std::int64_t N_reduced = 0;
+  MPI_Allreduce(&n_reduced, &N_reduced, 1, MPI_INT64_T, MPI_SUM, comm);
+
+  // Reduced index of every master block, from its owner.
+  std::vector<double> master_reduced_local;
+  for (std::size_t i = 0; i < masters_local.size(); i += 4)
+  {
+    const auto b =
+        static_cast<std::int64_t>(masters_local[i + 3]) - first_block;
+    master_reduced_local.push_back(static_cast<double>(reduced[b]));
+  }
+  const std::vector<double> master_reduced =
+      all_gather(comm, master_reduced_local);
+  std::vector<std::pair<std::int64_t, std::int64_t>> lookup(n_masters);
+  for (std::size_t m = 0; m < n_masters; ++m)
+  {
+    lookup[m] = {static_cast<std::int64_t>(masters[4 * m + 3]),
+                 static_cast<std::int64_t>(master_reduced[m])};
+  }
+  std::sort(lookup.begin(), lookup.end());
+
+  Mat P;
+  MatCreateAIJ(comm, n_owned * bs, n_reduced * bs, map.size_global() * bs,
+               N_reduced * bs, 1, nullptr, 1, nullptr, &P);
+  for (std::int32_t b = 0, s = 0; b < n_owned; ++b)
+  {
+    std::int64_t col = reduced[b];
+    if (s < static_cast<std::int32_t>(slaves.size()) && slaves[s] == b)
+    {
+      auto it =
+          std::lower_bound(lookup.begin(), lookup.end(),
+                           std::make_pair(slave_master[s], std::int64_t(-1)));
+      col = it->second;
+      ++s;
+    }
+    for (int k = 0; k < bs; ++k)
+    {
+      const PetscInt row = static_cast<PetscInt>((first_block + b) * bs + k);
+      const PetscInt c = static_cast<PetscInt>(col * bs + k);
+      MatSetValue(P, row, c, 1.0, INSERT_VALUES);
+    }
+  }
+  MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY);
+  MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY);
+  return P;
+}
+
+Vec restrict_to_tied(Mat P, Vec x)
+{
+  Vec xr, ones, counts;
+  MatCreateVecs(P, &xr, &ones);
+  VecDuplicate(xr, &counts);
+  VecSet(ones, 1.0);
+  MatMultTranspose(P, ones, counts);
+  MatMultTranspose(P, x, xr);
+  VecPointwiseDivide(xr, xr, counts);
+  VecDestroy(&ones);
+  VecDestroy(&counts);
+  return xr;
+}
+} // namespace damseis::fem
