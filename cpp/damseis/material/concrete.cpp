@@ -3,8 +3,8 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <bit>
-#include <limits>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -173,10 +173,9 @@ HtcConcrete::HtcConcrete(const ConcreteParameters& p) : p_(p)
   d_.fc0 = fac * p.fc0;
   const double ft0 = fac * p.ft0;
 
-  d_.calibration = p.classic_shape
-                       ? classic_calibration()
-                       : HtcCalibration{p.ft0 / p.fc0, p.fbc_ratio, p.xi0,
-                                        p.rho0};
+  d_.calibration = p.classic_shape ? classic_calibration()
+                                   : HtcCalibration{p.ft0 / p.fc0, p.fbc_ratio,
+                                                    p.xi0, p.rho0};
   family_ = HtcFamily(d_.calibration.fbc_ratio, d_.calibration.xi0,
                       d_.calibration.rho0);
   // Convexity over the whole range the guard allows (A, B, C >= 0).
@@ -275,6 +274,8 @@ HtcConcrete::HtcConcrete(const ConcreteParameters& p) : p_(p)
     d_.rate_t = {RateLaw::linear, 0.0, 1.0, p.eta_t};
   }
   rate_on_ = p.mode == Mode::viscoplastic && p.rate_law != RateLaw::none;
+  log_c_ = rate_on_ && d_.rate_c.law == RateLaw::ceb_fip;
+  log_t_ = rate_on_ && d_.rate_t.law == RateLaw::ceb_fip;
 }
 
 template <class T>
@@ -285,20 +286,24 @@ T HtcConcrete::hc(const T& kc) const
 }
 
 template <class T>
-void HtcConcrete::surfaces(const std::array<T, 3>& s, const T& kc,
-                           const T& kt, const T& kcd, const T& ktd,
-                           std::array<T, 5>& phi,
+void HtcConcrete::surfaces(const std::array<T, 3>& s, const T& kc, const T& kt,
+                           const T& kcd, const T& ktd, std::array<T, 5>& phi,
                            std::array<std::array<T, 3>, 5>* n) const
 {
   using std::exp;
   using std::sqrt;
-  const T Rc = rate_on_ ? d_.rate_c(vmax(kcd, T(0.0))) : T(1.0);
-  const T Rt = rate_on_ ? d_.rate_t(vmax(ktd, T(0.0))) : T(1.0);
+  // Rates may be transiently negative inside the Newton iteration; the
+  // power law stays smooth for kdot > -kdot0 (always true with the log-rate
+  // unknowns), the linear law for any rate.
+  const T Rc =
+      rate_on_ ? d_.rate_c(vmax(kcd, T(-0.999 * d_.rate_c.kdot0))) : T(1.0);
+  const T Rt =
+      rate_on_ ? d_.rate_t(vmax(ktd, T(-0.999 * d_.rate_t.kdot0))) : T(1.0);
   const T fc = d_.fc0 * hc(kc) * Rc;
   const T ft = d_.ft0 * exp(-kt / d_.kappa_tu) * Rt;
-  const T ftH = vmin(vmax(T((1.0 + p_.htc_tension_offset) * ft),
-                          T(p_.rho_min * fc)),
-                     T(p_.rho_max * fc));
+  const T ftH =
+      vmin(vmax(T((1.0 + p_.htc_tension_offset) * ft), T(p_.rho_min * fc)),
+           T(p_.rho_max * fc));
   const T ifc = 1.0 / fc;
   const auto X = family_.coefficients(T(ftH * ifc));
   const T I1 = s[0] + s[1] + s[2];
@@ -333,16 +338,39 @@ void HtcConcrete::surfaces(const std::array<T, 3>& s, const T& kc,
 template <class T, int M>
 void HtcConcrete::residual(const std::array<T, 5 + M>& x, const int* ids,
                            const std::array<double, 3>& str, double kcn,
-                           double ktn, double dt,
+                           double ktn, double dt, bool lc, bool lt, bool rates,
                            std::array<T, 5 + M>& r) const
 {
   using std::abs;
+  using std::exp;
+  using std::log;
   using std::sqrt;
   const std::array<T, 3> s = {x[0], x[1], x[2]};
-  const T& kc = x[3];
-  const T& kt = x[4];
-  const T kcd = rate_on_ ? T((kc - kcn) / dt) : T(0.0);
-  const T ktd = rate_on_ ? T((kt - ktn) / dt) : T(0.0);
+  // Internal variables: kappa itself, or (power rate law) the log-rate
+  // y = log(1 + kappa_dot / kdot0), which makes the consistency equation
+  // nearly linear in the unknown (R = exp(delta y)); with kappa as unknown
+  // the Newton iteration crawls through the logarithmic rate dependence.
+  T kc, kt, kcd, ktd;
+  if (lc)
+  {
+    kcd = d_.rate_c.kdot0 * (exp(x[3]) - 1.0);
+    kc = kcn + dt * kcd;
+  }
+  else
+  {
+    kc = x[3];
+    kcd = rates ? T((kc - kcn) / dt) : T(0.0);
+  }
+  if (lt)
+  {
+    ktd = d_.rate_t.kdot0 * (exp(x[4]) - 1.0);
+    kt = ktn + dt * ktd;
+  }
+  else
+  {
+    kt = x[4];
+    ktd = rates ? T((kt - ktn) / dt) : T(0.0);
+  }
   std::array<T, 5> phi;
   std::array<std::array<T, 3>, 5> n;
   surfaces(s, kc, kt, kcd, ktd, phi, &n);
@@ -360,22 +388,55 @@ void HtcConcrete::residual(const std::array<T, 5 + M>& x, const int* ids,
   const T tr = eh[0] + eh[1] + eh[2] + er[0] + er[1] + er[2];
   for (int i = 0; i < 3; ++i)
     r[i] = s[i] - str[i] + d_.lambda * tr + 2.0 * d_.G * (eh[i] + er[i]);
-  const T nh = sqrt(eh[0] * eh[0] + eh[1] * eh[1] + eh[2] * eh[2]);
-  const T nr = sqrt(er[0] * er[0] + er[1] * er[1] + er[2] * er[2]);
-  // Lee & Fenves stress weight: the tensile share of the HTC flow.
-  const T sa = abs(s[0]) + abs(s[1]) + abs(s[2]);
-  const T sp =
-      vmax(s[0], T(0.0)) + vmax(s[1], T(0.0)) + vmax(s[2], T(0.0));
-  const T w = value(sa) > 0.0 ? T(sp / sa) : T(0.0);
-  r[3] = kc - kcn - (1.0 - w) * c23 * nh;
-  r[4] = kt - ktn - w * c23 * nh - c23 * nr;
+  T nh = sqrt(eh[0] * eh[0] + eh[1] * eh[1] + eh[2] * eh[2]);
+  T nr = sqrt(er[0] * er[0] + er[1] * er[1] + er[2] * er[2]);
+  if (value(nh) == 0.0 || value(nr) == 0.0)
+  {
+    // At zero multipliers the norm has a kink: use its one-sided derivative
+    // for lambda >= 0 (sum of lambda_k |n_k|), same value (zero).
+    T sh(0.0), sr(0.0);
+    for (int j = 0; j < M; ++j)
+    {
+      const int k = ids[j];
+      const T& lam = x[5 + j];
+      if (k < 2)
+        sh += lam *
+              sqrt(n[k][0] * n[k][0] + n[k][1] * n[k][1] + n[k][2] * n[k][2]);
+      else
+        sr += lam;
+    }
+    if (value(nh) == 0.0)
+      nh = sh;
+    if (value(nr) == 0.0)
+      nr = sr;
+  }
+  // Lee & Fenves stress weight: the tensile share of the HTC flow,
+  // w = sum <s_i> / sum |s_i|, with |x| smoothed as sqrt(x^2 + e^2),
+  // e = 1e-6 fc0: the kinks at s_i = 0 (uniaxial and biaxial states sit
+  // exactly there) would otherwise stall the Newton iteration.
+  const double e2 = 1e-12 * d_.fc0 * d_.fc0;
+  T sa(0.0), sp(0.0);
+  for (int i = 0; i < 3; ++i)
+  {
+    const T a = sqrt(s[i] * s[i] + e2);
+    sa += a;
+    sp += 0.5 * (s[i] + a);
+  }
+  const T w = sp / sa;
+  const T dkc = (1.0 - w) * c23 * nh;
+  const T dkt = w * c23 * nh + c23 * nr;
+  r[3] = lc ? T(x[3] - log(1.0 + dkc / (dt * d_.rate_c.kdot0)))
+            : T(kc - kcn - dkc);
+  r[4] = lt ? T(x[4] - log(1.0 + dkt / (dt * d_.rate_t.kdot0)))
+            : T(kt - ktn - dkt);
   for (int j = 0; j < M; ++j)
     r[5 + j] = phi[ids[j]];
 }
 
 template <int M>
 bool HtcConcrete::solve_set(unsigned set, const std::array<double, 3>& str,
-                            double kcn, double ktn, double dt,
+                            double kcn, double ktn, double kcd_old,
+                            double ktd_old, double dt,
                             std::array<double, 9>& xout,
                             std::array<double, 9>& dsig_dtr,
                             int& iterations) const
@@ -387,81 +448,142 @@ bool HtcConcrete::solve_set(unsigned set, const std::array<double, 3>& str,
   for (int k = 0; k < 5; ++k)
     if (set & (1u << k))
       ids[m++] = k;
+  // Log-rate unknowns only for the mechanisms of the active set: a rate
+  // variable driven by a tiny share of the flow (e.g. kappa_t under HTC flow
+  // in compression) is badly scaled in log form and stays plain.
+  const bool lc = log_c_ && (set & (htc_surface | htc_edge));
+  const bool lt = log_t_ && (set & (rankine_1 | rankine_2 | rankine_3));
   std::array<double, N> x{};
   x[0] = str[0];
   x[1] = str[1];
   x[2] = str[2];
-  x[3] = kcn;
-  x[4] = ktn;
+  // Log-rate unknowns start from the rate of the previous step (a good
+  // guess under smooth loading); multipliers start at zero.
+  // (kcd_old < 0 requests the zero-rate start, used as a retry.)
+  x[3] = lc ? std::log1p(std::max(kcd_old, 0.0) / d_.rate_c.kdot0) : kcn;
+  x[4] = lt ? std::log1p(std::max(ktd_old, 0.0) / d_.rate_t.kdot0) : ktn;
   const double sS = 1.0 / d_.fc0, sK = d_.E / d_.fc0;
-  auto norm = [&](const auto& r)
-  {
-    double v = 0;
-    for (int i = 0; i < N; ++i)
-    {
-      const double sc = (i == 3 || i == 4) ? sK : sS;
-      v = std::max(v, std::abs(value(r[i])) * sc);
-    }
-    return std::isfinite(v) ? v : std::numeric_limits<double>::infinity();
-  };
   std::array<D, N> xd, rd;
   std::array<double, N * N> J;
   std::array<int, N> piv;
   std::array<double, N> dx, xt, rt;
-  for (int it = 0; it < p_.max_iterations; ++it)
+  // Damped Newton; on success x is converged (and polished) and J holds the
+  // LU factors of the Jacobian there.
+  auto newton = [&](bool lcx, bool ltx, bool rates,
+                    std::array<double, N>& x) -> bool
   {
-    for (int i = 0; i < N; ++i)
-      xd[i] = D::variable(x[i], i);
-    residual<D, M>(xd, ids, str, kcn, ktn, dt, rd);
-    const double r0 = norm(rd);
-    for (int i = 0; i < N; ++i)
+    const double c3 = lcx ? 1.0 : sK, c4 = ltx ? 1.0 : sK;
+    auto scale = [&](int i) { return i == 3 ? c3 : (i == 4 ? c4 : sS); };
+    auto norm = [&](const auto& r)
     {
-      dx[i] = -rd[i].v;
-      for (int j = 0; j < N; ++j)
-        J[i * N + j] = rd[i].d[j];
-    }
-    if (!lu_factor<N>(J, piv))
-      return false;
-    lu_solve<N>(J, piv, dx);
-    if (r0 < p_.tolerance)
-    {
-      // One more (polishing) Newton step brings the solution to round-off,
-      // so the tangent below is the derivative of the returned map.
+      double v = 0;
       for (int i = 0; i < N; ++i)
-        x[i] += dx[i];
-      for (int c = 0; c < 3; ++c)
+        v = std::max(v, std::abs(value(r[i])) * scale(i));
+      return std::isfinite(v) ? v : std::numeric_limits<double>::infinity();
+    };
+    auto merit = [&](const auto& r)
+    {
+      double v = 0;
+      for (int i = 0; i < N; ++i)
       {
-        std::array<double, N> e{};
-        e[c] = 1.0;
-        lu_solve<N>(J, piv, e);
-        for (int i = 0; i < 3; ++i)
-          dsig_dtr[i * 3 + c] = e[i];
+        const double e = value(r[i]) * scale(i);
+        v += e * e;
       }
-      for (int i = 0; i < N; ++i)
-        xout[i] = x[i];
-      return true;
-    }
-    ++iterations;
-    // Backtracking on the scaled residual.
-    double alpha = 1.0;
-    bool ok = false;
-    for (int ls = 0; ls < 30; ++ls)
+      return std::isfinite(v) ? std::sqrt(v)
+                              : std::numeric_limits<double>::infinity();
+    };
+    for (int it = 0; it < p_.max_iterations; ++it)
     {
       for (int i = 0; i < N; ++i)
-        xt[i] = x[i] + alpha * dx[i];
-      residual<double, M>(xt, ids, str, kcn, ktn, dt, rt);
-      if (norm(rt) < (1.0 - 1e-4 * alpha) * r0)
+        xd[i] = D::variable(x[i], i);
+      residual<D, M>(xd, ids, str, kcn, ktn, dt, lcx, ltx, rates, rd);
+      const double r0 = norm(rd), m0 = merit(rd);
+      for (int i = 0; i < N; ++i)
       {
-        ok = true;
-        break;
+        dx[i] = -rd[i].v;
+        for (int j = 0; j < N; ++j)
+          J[i * N + j] = rd[i].d[j];
       }
-      alpha *= 0.5;
+      if (!lu_factor<N>(J, piv))
+        return false;
+      lu_solve<N>(J, piv, dx);
+      if (r0 < p_.tolerance)
+      {
+        // One more (polishing) Newton step brings the solution to
+        // round-off, so the tangent is the derivative of the returned map.
+        for (int i = 0; i < N; ++i)
+          x[i] += dx[i];
+        return true;
+      }
+      ++iterations;
+      // Backtracking on the scaled residual; log-rate steps limited to 2
+      // (a factor e^2 on the rate) per iteration.
+      double alpha = 1.0;
+      if (lcx && std::abs(dx[3]) > 2.0)
+        alpha = std::min(alpha, 2.0 / std::abs(dx[3]));
+      if (ltx && std::abs(dx[4]) > 2.0)
+        alpha = std::min(alpha, 2.0 / std::abs(dx[4]));
+      bool ok = false;
+      for (int ls = 0; ls < 30; ++ls)
+      {
+        for (int i = 0; i < N; ++i)
+          xt[i] = x[i] + alpha * dx[i];
+        residual<double, M>(xt, ids, str, kcn, ktn, dt, lcx, ltx, rates, rt);
+        if (merit(rt) < (1.0 - 1e-4 * alpha) * m0)
+        {
+          ok = true;
+          break;
+        }
+        alpha *= 0.5;
+      }
+      if (!ok)
+        return false;
+      x = xt;
     }
-    if (!ok)
+    return false;
+  };
+
+  // Viscoplastic: first from the trial state and the old rates (good under
+  // smooth loading); if that fails, from the rate-independent return (R = 1)
+  // for this set, an upper bound of the viscoplastic increments whose kappa
+  // increments give the starting log-rates (from zero multipliers and far
+  // rates the logarithmic rate law makes Newton crawl).
+  const std::array<double, N> x0 = x;
+  if (!newton(lc, lt, rate_on_, x))
+  {
+    if (!rate_on_ || kcd_old < 0.0)
       return false;
-    x = xt;
+    std::array<double, N> xp{};
+    xp[0] = str[0];
+    xp[1] = str[1];
+    xp[2] = str[2];
+    xp[3] = kcn;
+    xp[4] = ktn;
+    if (!newton(false, false, false, xp))
+      return false;
+    x = xp;
+    x[3] = lc ? std::log1p(std::max(xp[3] - kcn, 0.0) / (dt * d_.rate_c.kdot0))
+              : xp[3];
+    x[4] = lt ? std::log1p(std::max(xp[4] - ktn, 0.0) / (dt * d_.rate_t.kdot0))
+              : xp[4];
+    if (x == x0 || !newton(lc, lt, rate_on_, x))
+      return false;
   }
-  return false;
+  for (int c = 0; c < 3; ++c)
+  {
+    std::array<double, N> e{};
+    e[c] = 1.0;
+    lu_solve<N>(J, piv, e);
+    for (int i = 0; i < 3; ++i)
+      dsig_dtr[i * 3 + c] = e[i];
+  }
+  for (int i = 0; i < N; ++i)
+    xout[i] = x[i];
+  if (lc)
+    xout[3] = kcn + dt * d_.rate_c.kdot0 * std::expm1(x[3]);
+  if (lt)
+    xout[4] = ktn + dt * d_.rate_t.kdot0 * std::expm1(x[4]);
+  return true;
 }
 
 Update HtcConcrete::integrate(const State& old, const Vector6& de,
@@ -530,20 +652,42 @@ Update HtcConcrete::integrate(const State& old, const Vector6& de,
     switch (m)
     {
     case 1:
-      ok = solve_set<1>(s, str, old.kappa_c, old.kappa_t, dt, x, C,
-                        u.iterations);
+      ok = solve_set<1>(s, str, old.kappa_c, old.kappa_t, old.kappa_c_rate,
+                        old.kappa_t_rate, dt, x, C, u.iterations);
       break;
     case 2:
-      ok = solve_set<2>(s, str, old.kappa_c, old.kappa_t, dt, x, C,
-                        u.iterations);
+      ok = solve_set<2>(s, str, old.kappa_c, old.kappa_t, old.kappa_c_rate,
+                        old.kappa_t_rate, dt, x, C, u.iterations);
       break;
     case 3:
-      ok = solve_set<3>(s, str, old.kappa_c, old.kappa_t, dt, x, C,
-                        u.iterations);
+      ok = solve_set<3>(s, str, old.kappa_c, old.kappa_t, old.kappa_c_rate,
+                        old.kappa_t_rate, dt, x, C, u.iterations);
       break;
     default:
-      ok = solve_set<4>(s, str, old.kappa_c, old.kappa_t, dt, x, C,
-                        u.iterations);
+      ok = solve_set<4>(s, str, old.kappa_c, old.kappa_t, old.kappa_c_rate,
+                        old.kappa_t_rate, dt, x, C, u.iterations);
+    }
+    if (!ok && rate_on_ && (old.kappa_c_rate > 0.0 || old.kappa_t_rate > 0.0))
+    {
+      // Retry from zero rates (the old rates can be far from this step's).
+      switch (m)
+      {
+      case 1:
+        ok = solve_set<1>(s, str, old.kappa_c, old.kappa_t, -1.0, -1.0, dt, x,
+                          C, u.iterations);
+        break;
+      case 2:
+        ok = solve_set<2>(s, str, old.kappa_c, old.kappa_t, -1.0, -1.0, dt, x,
+                          C, u.iterations);
+        break;
+      case 3:
+        ok = solve_set<3>(s, str, old.kappa_c, old.kappa_t, -1.0, -1.0, dt, x,
+                          C, u.iterations);
+        break;
+      default:
+        ok = solve_set<4>(s, str, old.kappa_c, old.kappa_t, -1.0, -1.0, dt, x,
+                          C, u.iterations);
+      }
     }
     if (!ok)
       return 0xffu;
@@ -639,8 +783,7 @@ Update HtcConcrete::integrate(const State& old, const Vector6& de,
       ds[a] = tr[a] - ns.stress[a];
     const double tr_ds = ds[0] + ds[1] + ds[2];
     for (int a = 0; a < 3; ++a)
-      ns.plastic_strain[a] +=
-          ((1.0 + d_.nu) * ds[a] - d_.nu * tr_ds) / d_.E;
+      ns.plastic_strain[a] += ((1.0 + d_.nu) * ds[a] - d_.nu * tr_ds) / d_.E;
     for (int a = 3; a < 6; ++a)
       ns.plastic_strain[a] += ds[a] / d_.G;
   }
@@ -710,8 +853,8 @@ double HtcConcrete::tensile_strength(double kt, double ktd) const
          (rate_on_ ? d_.rate_t(std::max(ktd, 0.0)) : 1.0);
 }
 
-HtcCoefficients HtcConcrete::htc_coefficients(double kc, double kt,
-                                              double kcd, double ktd) const
+HtcCoefficients HtcConcrete::htc_coefficients(double kc, double kt, double kcd,
+                                              double ktd) const
 {
   const double fc = compressive_strength(kc, kcd);
   const double ft = tensile_strength(kt, ktd);

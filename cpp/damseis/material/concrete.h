@@ -34,9 +34,9 @@ enum class Mode
 /// dynamic_factor).
 struct ConcreteParameters
 {
-  double E = 24e9;   ///< Young's modulus [Pa]
-  double nu = 0.17;  ///< Poisson's ratio
-  double fc0 = 30e6; ///< static uniaxial compressive strength [Pa] (> 0)
+  double E = 24e9;    ///< Young's modulus [Pa]
+  double nu = 0.17;   ///< Poisson's ratio
+  double fc0 = 30e6;  ///< static uniaxial compressive strength [Pa] (> 0)
   double ft0 = 2.5e6; ///< static uniaxial tensile strength [Pa] (> 0)
   /// HTC calibration: fbc/fc, and the triaxial point (sigma_oct, tau_oct) =
   /// (-xi0 fc, rho0 fc) on the compressive meridian.
@@ -45,9 +45,9 @@ struct ConcreteParameters
   /// xi0, rho0 (with ft/fc = 0.1 the surface is exactly A = 2.0108,
   /// B = 0.9714, C = 9.1412, D = 0.2312).
   bool classic_shape = false;
-  double Gf = 200.0;          ///< tensile fracture energy [N/m]
-  double Gc = 20e3;           ///< compressive fracture energy [N/m]
-  double element_size = 0.1;  ///< crack-band width h [m]
+  double Gf = 200.0;         ///< tensile fracture energy [N/m]
+  double Gc = 20e3;          ///< compressive fracture energy [N/m]
+  double element_size = 0.1; ///< crack-band width h [m]
   /// The HTC surface passes through (1 + offset) ft in uniaxial tension so
   /// that the Rankine plane, not the HTC, carries tension (no coincident
   /// corner at the uniaxial tension point).
@@ -69,7 +69,7 @@ struct ConcreteParameters
   double dynamic_factor = 1.3;
   /// Local Newton: scaled residual tolerance and iteration limit.
   double tolerance = 1e-10;
-  int max_iterations = 40;
+  int max_iterations = 60;
 };
 
 /// State at a material point.
@@ -85,11 +85,11 @@ struct State
 /// Bits of the active set.
 enum Surface : unsigned
 {
-  htc_surface = 1u,  ///< HTC with the largest principal stress
-  htc_edge = 2u,     ///< HTC second branch (compressive meridian edge)
-  rankine_1 = 4u,    ///< sigma_1 <= ft
-  rankine_2 = 8u,    ///< sigma_2 <= ft
-  rankine_3 = 16u    ///< sigma_3 <= ft
+  htc_surface = 1u, ///< HTC with the largest principal stress
+  htc_edge = 2u,    ///< HTC second branch (compressive meridian edge)
+  rankine_1 = 4u,   ///< sigma_1 <= ft
+  rankine_2 = 8u,   ///< sigma_2 <= ft
+  rankine_3 = 16u   ///< sigma_3 <= ft
 };
 
 /// "elastic", or the active surfaces joined by '+', e.g. "HTC+edge", "R1+R2".
@@ -99,7 +99,7 @@ std::string active_set_name(unsigned active);
 struct Update
 {
   State state;
-  Matrix6 tangent{}; ///< consistent (algorithmic) tangent
+  Matrix6 tangent{};   ///< consistent (algorithmic) tangent
   unsigned active = 0; ///< Surface bits of the converged active set
   int iterations = 0;  ///< local Newton iterations (all active-set passes)
   int passes = 0;      ///< active sets tried
@@ -109,11 +109,11 @@ struct Update
 /// Values derived from the parameters at construction.
 struct DerivedProperties
 {
-  double E, nu, G, lambda, K; ///< elasticity (after the dynamic factor)
-  double fc0, ft0;            ///< effective initial strengths
-  double kappa_tu, kappa_cs;  ///< softening scales of Ht, Hc
-  double l_ch;                ///< E Gf / ft0^2 with the nominal ft0 [m]
-  bool tension_strength_reduced; ///< h too large: ft0 lowered (snap-back)
+  double E, nu, G, lambda, K;     ///< elasticity (after the dynamic factor)
+  double fc0, ft0;                ///< effective initial strengths
+  double kappa_tu, kappa_cs;      ///< softening scales of Ht, Hc
+  double l_ch;                    ///< E Gf / ft0^2 with the nominal ft0 [m]
+  bool tension_strength_reduced;  ///< h too large: ft0 lowered (snap-back)
   bool compression_energy_raised; ///< h too large: Gc/h not reachable
   double uniaxial_compression_dissipation; ///< k_c = |deps_p,axial|/dkappa_c
   RateFunction rate_c, rate_t;
@@ -129,8 +129,7 @@ public:
   /// Backward-Euler integration over one step. d_strain: total strain
   /// increment; dt: time step (> 0 in viscoplastic mode with a rate law; may
   /// be 0 otherwise). Rates kappa_dot = delta kappa / dt (0 if dt = 0).
-  Update integrate(const State& old, const Vector6& d_strain,
-                   double dt) const;
+  Update integrate(const State& old, const Vector6& d_strain, double dt) const;
 
   /// Strengths for given internal variables and their rates.
   double compressive_strength(double kappa_c, double kappa_c_rate) const;
@@ -163,12 +162,14 @@ public:
 private:
   template <int M>
   bool solve_set(unsigned set, const std::array<double, 3>& str, double kcn,
-                 double ktn, double dt, std::array<double, 9>& x,
-                 std::array<double, 9>& dsig_dtr, int& iterations) const;
+                 double ktn, double kcd_old, double ktd_old, double dt,
+                 std::array<double, 9>& x, std::array<double, 9>& dsig_dtr,
+                 int& iterations) const;
   template <class T, int M>
   void residual(const std::array<T, 5 + M>& x, const int* ids,
                 const std::array<double, 3>& str, double kcn, double ktn,
-                double dt, std::array<T, 5 + M>& r) const;
+                double dt, bool lc, bool lt, bool rates,
+                std::array<T, 5 + M>& r) const;
   template <class T>
   T hc(const T& kc) const;
 
@@ -176,6 +177,7 @@ private:
   DerivedProperties d_{};
   HtcFamily family_;
   bool rate_on_ = false;
+  bool log_c_ = false, log_t_ = false; ///< log-rate unknowns (power law)
 };
 
 } // namespace damseis::material

@@ -21,15 +21,23 @@ struct StepResult
 /// One step from `old` with prescribed strain increments (strain-controlled
 /// components of de) and stress targets (stress-controlled components).
 StepResult one_step(const HtcConcrete& model, const State& old,
-                    const std::array<Control, 6>& control, Vector6 de,
+                    const std::array<Control, 6>& control,
+                    const std::array<int, 6>& tie, Vector6 de,
                     const Vector6& sig_target, double dt, double tol,
                     const Matrix6& guess_tangent)
 {
   StepResult r;
   int free_idx[6], nf = 0;
   for (int i = 0; i < 6; ++i)
-    if (control[i] == Control::stress)
+    if (control[i] == Control::stress && tie[i] < 0)
       free_idx[nf++] = i;
+  auto apply_ties = [&](Vector6& d)
+  {
+    for (int i = 0; i < 6; ++i)
+      if (tie[i] >= 0)
+        d[i] = d[tie[i]];
+  };
+  apply_ties(de);
   auto solve_free = [&](const Matrix6& T, const Vector6& res, Vector6& d)
   {
     Eigen::MatrixXd A(nf, nf);
@@ -38,7 +46,12 @@ StepResult one_step(const HtcConcrete& model, const State& old,
     {
       b[a] = -res[free_idx[a]];
       for (int c = 0; c < nf; ++c)
+      {
         A(a, c) = T[free_idx[a] * 6 + free_idx[c]];
+        for (int i = 0; i < 6; ++i)
+          if (tie[i] == free_idx[c])
+            A(a, c) += T[free_idx[a] * 6 + i];
+      }
     }
     // Minimum-norm solution: at a corner of the surface (e.g. the
     // compressive-meridian edge in uniaxial compression) the flow split
@@ -50,6 +63,7 @@ StepResult one_step(const HtcConcrete& model, const State& old,
     const Eigen::VectorXd x = cod.solve(b);
     for (int a = 0; a < nf; ++a)
       d[free_idx[a]] += x[a];
+    apply_ties(d);
   };
   if (nf > 0)
   {
@@ -61,12 +75,13 @@ StepResult one_step(const HtcConcrete& model, const State& old,
       const int i = free_idx[a];
       double s = old.stress[i] - sig_target[i];
       for (int j = 0; j < 6; ++j)
-        if (control[j] == Control::strain)
+        if (control[j] == Control::strain && tie[j] < 0)
           s += guess_tangent[i * 6 + j] * de[j];
       res[i] = s;
     }
     for (int a = 0; a < nf; ++a)
       de[free_idx[a]] = 0.0;
+    apply_ties(de);
     solve_free(guess_tangent, res, de);
   }
   const double fc0 = model.derived().fc0;
@@ -145,7 +160,7 @@ PathResult run_path(const HtcConcrete& model,
             stj[i] = prev.state.stress[i] +
                      double(j) / nsub * (st[i] - prev.state.stress[i]);
           }
-          r = one_step(model, s, seg.control, dej, stj, dt / nsub,
+          r = one_step(model, s, seg.control, seg.tie, dej, stj, dt / nsub,
                        stress_tolerance, T);
           ok = r.ok;
           if (ok)
@@ -215,6 +230,7 @@ std::vector<Segment> uniaxial_path(double eps_end, double rate, int steps)
   s.control.fill(Control::stress);
   s.control[0] = Control::strain;
   s.target = {eps_end, 0, 0, 0, 0, 0};
+  s.tie[2] = 1; // axisymmetric: eps33 = eps22
   return {s};
 }
 

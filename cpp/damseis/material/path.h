@@ -31,14 +31,20 @@ struct Segment
   int steps = 1;
   std::array<Control, 6> control{};
   Vector6 target{};
+  /// tie[i] = j >= 0: the strain increment of component i equals that of
+  /// component j (axisymmetric paths: tie 33 to 22). A tied component's own
+  /// control/target are ignored. Needed on the compressive meridian: there
+  /// the HTC edge leaves the split of the flow between its two faces free
+  /// under stress control, and an untied lateral pair drifts apart.
+  std::array<int, 6> tie{-1, -1, -1, -1, -1, -1};
 };
 
 /// The state after one step.
 struct PathPoint
 {
   double time = 0;
-  Vector6 strain{};       ///< total strain (engineering shear)
-  Vector6 strain_rate{};  ///< of the step
+  Vector6 strain{};      ///< total strain (engineering shear)
+  Vector6 strain_rate{}; ///< of the step
   State state;
   unsigned active = 0;
   int local_iterations = 0; ///< of the last integration of the step
@@ -56,8 +62,7 @@ struct PathResult
 /// components are within `stress_tolerance` x fc0 of their targets.
 PathResult run_path(const HtcConcrete& model,
                     const std::vector<Segment>& segments,
-                    const State& initial = {},
-                    double stress_tolerance = 1e-9);
+                    const State& initial = {}, double stress_tolerance = 1e-9);
 
 /// Writes the points as CSV (header line, one row per point).
 void write_csv(std::ostream& out, const PathResult& result);
