@@ -176,9 +176,8 @@ double LevelTable::operator()(double z) const
     return _y[0] + slope_at(0, true) * (z - _z[0]);
   if (z >= _z[n - 1])
     return _y[n - 1] + slope_at(n - 2, false) * (z - _z[n - 1]);
-  const std::size_t i =
-      std::min<std::size_t>(n - 2, std::upper_bound(_z.begin(), _z.end(), z) -
-                                       _z.begin() - 1);
+  const std::size_t i = std::min<std::size_t>(
+      n - 2, std::upper_bound(_z.begin(), _z.end(), z) - _z.begin() - 1);
   const double h = _z[i + 1] - _z[i];
   const double t = (z - _z[i]) / h, u = 1 - t;
   double v = u * _y[i] + t * _y[i + 1];
@@ -222,8 +221,7 @@ ArchDamGeometry::ArchDamGeometry(const ArchDamDefinition& def) : _def(def)
     _rl = table(d.radius_lateral, "dam.radius_lateral");
     _phi = table(d.central_angle_deg, "dam.central_angle");
   }
-  require(std::isfinite(d.thickening_exponent) and
-              d.thickening_exponent > 0,
+  require(std::isfinite(d.thickening_exponent) and d.thickening_exponent > 0,
           "dam.thickening_exponent", "must be positive");
 
   // Canyon polyline
@@ -266,11 +264,11 @@ ArchDamGeometry::ArchDamGeometry(const ArchDamDefinition& def) : _def(def)
   {
     require(c.z.size() >= 2 and c.x_left.size() == c.z.size() and
                 c.x_right.size() == c.z.size(),
-            "canyon.z", "canyon.z, canyon.x_left, canyon.x_right need the "
-                        "same length (>= 2)");
+            "canyon.z",
+            "canyon.z, canyon.x_left, canyon.x_right need the "
+            "same length (>= 2)");
     require(std::abs(c.z.front()) <= 1e-9 * H, "canyon.z", "must start at 0");
-    require(c.z.back() >= H * (1 - 1e-9), "canyon.z",
-            "must reach dam.height");
+    require(c.z.back() >= H * (1 - 1e-9), "canyon.z", "must reach dam.height");
     for (std::size_t i = 0; i < c.z.size(); ++i)
     {
       require(i == 0 or c.z[i] > c.z[i - 1], "canyon.z",
@@ -360,7 +358,10 @@ double ArchDamGeometry::thickness(double z, double theta) const
   const double x = centre(z, theta)[0];
   const double X = x < 0 ? -x_left(z) : x_right(z);
   const double xi = std::abs(x) / X;
-  return r.t_c + (r.t_a - r.t_c) * std::pow(xi, _def.dam.thickening_exponent);
+  const double p = _def.dam.thickening_exponent;
+  // Beyond the wall (inside the rock): C1 linear continuation
+  const double f = xi <= 1 ? std::pow(xi, p) : 1 + p * (xi - 1);
+  return r.t_c + (r.t_a - r.t_c) * f;
 }
 //-----------------------------------------------------------------------------
 std::array<double, 3> ArchDamGeometry::face_point(double z, double theta,
@@ -380,8 +381,13 @@ double ArchDamGeometry::theta_at_x(double z, double x) const
 //-----------------------------------------------------------------------------
 double ArchDamGeometry::face_theta_at_x(double z, double x, int side) const
 {
+  // Bracket around the centre-line theta at x (the face is offset by at
+  // most T/2 from the centre line)
+  const double t0 = theta_at_x(z, x);
+  const double dt =
+      std::min(1.0, 0.75 * thickness(z, t0) / curvature_radius(z, t0) + 0.05);
   return bisect([&](double t) { return face_point(z, t, side)[0] - x; },
-                -theta_max, theta_max);
+                std::max(-theta_max, t0 - dt), std::min(theta_max, t0 + dt));
 }
 //-----------------------------------------------------------------------------
 std::array<double, 2> ArchDamGeometry::offset(double z, double x,
@@ -472,7 +478,8 @@ double ArchDamGeometry::face_area(int side) const
     const double b = face_theta_at_x(z, x_right(z), side);
     auto f = [&](double t)
     {
-      const auto t1 = face_point(z, t + h, side), t0 = face_point(z, t - h, side);
+      const auto t1 = face_point(z, t + h, side),
+                 t0 = face_point(z, t - h, side);
       // z derivative one-sided at the ends of [0, H]
       const double za = std::max(0.0, z - hz), zb = std::min(height(), z + hz);
       const auto z1 = face_point(zb, t, side), z0 = face_point(za, t, side);
@@ -482,7 +489,8 @@ double ArchDamGeometry::face_area(int side) const
         u[k] = (t1[k] - t0[k]) / (2 * h);
         v[k] = (z1[k] - z0[k]) / (zb - za);
       }
-      const double cx = u[1] * v[2] - u[2] * v[1], cy = u[2] * v[0] - u[0] * v[2],
+      const double cx = u[1] * v[2] - u[2] * v[1],
+                   cy = u[2] * v[0] - u[0] * v[2],
                    cz = u[0] * v[1] - u[1] * v[0];
       return std::sqrt(cx * cx + cy * cy + cz * cz);
     };
@@ -606,6 +614,21 @@ void ArchDamGeometry::validate() const
             "the arch at z = " + str(z) +
                 " does not reach the left canyon wall; increase the radii");
     const double a = theta_at_x(z, x_left(z)), b = theta_at_x(z, x_right(z));
+    for (int side : {-1, 1})
+    {
+      double xprev = -1e300;
+      for (int j = 0; j <= 80; ++j)
+      {
+        const double t = a - 0.1 + (b - a + 0.2) * j / 80.0;
+        const double xf = face_point(z, t, side)[0];
+        require(xf > xprev, "dam.abutment_thickness",
+                "the " + std::string(side < 0 ? "upstream" : "downstream") +
+                    " face at z = " + str(z) +
+                    " folds back near the walls (thickening too fast "
+                    "for the radius of curvature)");
+        xprev = xf;
+      }
+    }
     for (int j = 0; j <= 40; ++j)
     {
       const double t = a + (b - a) * j / 40.0;

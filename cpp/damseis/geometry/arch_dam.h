@@ -52,7 +52,7 @@ enum class CanyonShape
 /// [levels.front(), levels.back()].
 struct ArchDamShape
 {
-  double height = 102;       ///< crest elevation [m] (base at z = 0)
+  double height = 102;        ///< crest elevation [m] (base at z = 0)
   std::vector<double> levels; ///< elevations of the tables, 0 ... height
   /// y of the upstream face at the crown (crown cantilever profile) [m]
   std::vector<double> crown_upstream_y;
@@ -72,10 +72,10 @@ struct ArchDamShape
 struct CanyonDefinition
 {
   CanyonShape shape = CanyonShape::v;
-  double bottom_width = 20;  ///< floor width at z = 0 (v, u) [m]
-  double crest_width = 300;  ///< valley width at the crest elevation [m]
-  double u_radius = 40;      ///< fillet radius (u) [m]
-  int u_segments = 12;       ///< straight segments per fillet (u)
+  double bottom_width = 20;    ///< floor width at z = 0 (v, u) [m]
+  double crest_width = 300;    ///< valley width at the crest elevation [m]
+  double u_radius = 40;        ///< fillet radius (u) [m]
+  int u_segments = 12;         ///< straight segments per fillet (u)
   std::vector<double> z;       ///< points: elevations, 0 ... >= height
   std::vector<double> x_left;  ///< points: left wall x (< 0) [m]
   std::vector<double> x_right; ///< points: right wall x (> 0) [m]
@@ -106,16 +106,16 @@ struct JointDefinition
 /// Mesh options.
 struct ArchMeshOptions
 {
-  double size = 10.0;     ///< element size in the dam [m]
-  double size_far = 0;    ///< size at the far foundation (0: 4 x size) [m]
+  double size = 10.0;  ///< element size in the dam [m]
+  double size_far = 0; ///< size at the far foundation (0: 4 x size) [m]
   /// distance (multiple of the height) over which the size grades from
   /// `size` at the dam to `size_far`
   double grading_distance = 0.5;
   /// minimum number of elements through the crown thickness (0: off); the
   /// dam size becomes min(size, T_c(z) / dam_layers)
   int dam_layers = 0;
-  int sections = 0;     ///< lofted sections (0: automatic)
-  int arch_points = 41; ///< points per face spline of a section
+  int sections = 0;     ///< lofted sections (0: automatic = 12)
+  int arch_points = 17; ///< points per face spline of a section
   bool optimize = true; ///< gmsh tetrahedron optimisation (Netgen off)
 };
 
@@ -135,7 +135,7 @@ struct JointPlane
 {
   int label_index = 0; ///< 0 for 'A', 1 for 'B', ...
   char label = 'A';
-  double fraction = 0; ///< position along the crest arc length (0, 1)
+  double fraction = 0;           ///< position along the crest arc length (0, 1)
   std::array<double, 3> point{}; ///< crest centre-line point (z = height)
   std::array<double, 3> normal{}; ///< horizontal unit normal
 };

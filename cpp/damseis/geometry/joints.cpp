@@ -88,9 +88,8 @@ std::vector<JointPairs> split_joints(std::vector<double>& x,
       const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
       const double area = 0.5 * len;
       const double s =
-          n[0] * j.normal[0] + n[1] * j.normal[1] + n[2] * j.normal[2] < 0
-              ? -1
-              : 1;
+          n[0] * j.normal[0] + n[1] * j.normal[1] + n[2] * j.normal[2] < 0 ? -1
+                                                                           : 1;
       for (int a = 0; a < 3; ++a)
       {
         auto& q = acc[v[a]];

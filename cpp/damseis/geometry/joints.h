@@ -33,10 +33,10 @@ struct JointPairs
   std::array<double, 3> plane_normal{}; ///< unit normal, side 1 -> side 2
   std::vector<std::int64_t> node1;      ///< side-1 input node indices
   std::vector<std::int64_t> node2;      ///< side-2 input node indices
-  std::vector<double> x;      ///< pair coordinates, row-major (n, 3)
-  std::vector<double> normal; ///< area-weighted unit normals (n, 3),
-                              ///< side 1 -> side 2
-  std::vector<double> area;   ///< tributary area (1/3 of adjacent facets)
+  std::vector<double> x;                ///< pair coordinates, row-major (n, 3)
+  std::vector<double> normal;           ///< area-weighted unit normals (n, 3),
+                                        ///< side 1 -> side 2
+  std::vector<double> area; ///< tributary area (1/3 of adjacent facets)
   std::size_t size() const { return node1.size(); }
 };
 
