@@ -101,7 +101,9 @@ GravityDamConfig read_gravity_dam_config(const input::Case& c)
            "a width larger than toe_x - heel_x");
   }
 
-  g.seismic = read_seismic_settings(c, gravity_dam_directions(), 2, s.crest_y);
+  g.seismic = read_seismic_settings(c, gravity_dam_directions(), 2, s.crest_y,
+                                    {s.heel_x, s.crest_y, 0.0},
+                                    {s.heel_x, s.base_y, 0.0});
   s.water_level = g.seismic.reservoir.level;
   g.seismic.faces = {{"upstream", tags::upstream_face},
                      {"downstream", tags::downstream_face}};

@@ -62,9 +62,11 @@ void add_seismic_keys(input::Schema& s,
   s.string("output.stress", "total", "-", "stresses in envelopes and summary",
            {"total", "seismic"});
   s.real_array("output.crest_point", crest_point, "m",
-               "point whose displacement history is recorded");
+               "point whose displacement history is recorded (empty: the "
+               "crest of the crown section)");
   s.real_array("output.base_point", base_point, "m",
-               "reference point: crest displacement is relative to it");
+               "reference point: crest displacement is relative to it "
+               "(empty: the base of the crown section)");
   s.boolean("output.plots", "true", "-",
             "write PNG plots (needs python3-matplotlib)");
   s.integer("run.checkpoint_every", "0", "-",
@@ -76,7 +78,7 @@ void add_seismic_keys(input::Schema& s,
             "write a checkpoint and stop at this step (0: run to the end)")
       .at_least(0);
   s.string("solver.factorization", "auto", "-",
-           "sparse factorisation (auto: petsc serial, mumps in parallel)",
+           "sparse factorisation (auto: petsc for serial 2D, else mumps)",
            {"auto", "petsc", "mumps", "cholmod"});
 }
 
@@ -133,9 +135,11 @@ GroundMotion read_motion(const input::Case& c, const std::string& p, double dt,
 }
 
 std::array<double, 3> point(const input::Case& c, const std::string& key,
-                            int dim)
+                            int dim, const std::array<double, 3>& automatic)
 {
   auto v = c.reals(key);
+  if (v.empty())
+    return automatic;
   if (static_cast<int>(v.size()) != dim)
   {
     c.fail(key, "has " + std::to_string(v.size()) + " coordinates",
@@ -149,7 +153,9 @@ std::array<double, 3> point(const input::Case& c, const std::string& key,
 
 SeismicSettings read_seismic_settings(const input::Case& c,
                                       const std::vector<Direction>& directions,
-                                      int dim, double crest_elevation)
+                                      int dim, double crest_elevation,
+                                      const std::array<double, 3>& crest,
+                                      const std::array<double, 3>& base)
 {
   SeismicSettings g;
   g.gravity = c.real("loads.gravity");
@@ -221,13 +227,17 @@ SeismicSettings read_seismic_settings(const input::Case& c,
 
   g.output_every = static_cast<int>(c.integer("output.every"));
   g.stress_total = c.string("output.stress") == "total";
-  g.crest_point = point(c, "output.crest_point", dim);
-  g.base_point = point(c, "output.base_point", dim);
+  g.crest_point = point(c, "output.crest_point", dim, crest);
+  g.base_point = point(c, "output.base_point", dim, base);
   g.plots = c.boolean("output.plots");
   g.checkpoint_every = static_cast<int>(c.integer("run.checkpoint_every"));
   g.restart = c.boolean("run.restart");
   g.stop_at_step = static_cast<int>(c.integer("run.stop_at_step"));
   g.factorization = fem::parse_factorization(c.string("solver.factorization"));
+  // PETSc's own (non-supernodal) factorisation is the fastest for 2D
+  // sections but far too slow in 3D, where MUMPS wins (bench/).
+  if (g.factorization == fem::Factorization::automatic && dim == 3)
+    g.factorization = fem::Factorization::mumps;
   return g;
 }
 } // namespace damseis::analysis

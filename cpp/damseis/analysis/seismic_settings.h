@@ -67,9 +67,12 @@ void add_seismic_keys(input::Schema& schema,
                       const std::string& base_point);
 
 /// Reads and checks the shared keys, loads and scales the records. `dim` is
-/// the spatial dimension; `crest_elevation` bounds the reservoir level.
-/// Throws input::InputError naming the file and key.
+/// the spatial dimension; `crest_elevation` bounds the reservoir level;
+/// `crest` and `base` are used when output.crest_point / output.base_point
+/// are empty. Throws input::InputError naming the file and key.
 SeismicSettings read_seismic_settings(const input::Case& c,
                                       const std::vector<Direction>& directions,
-                                      int dim, double crest_elevation);
+                                      int dim, double crest_elevation,
+                                      const std::array<double, 3>& crest,
+                                      const std::array<double, 3>& base);
 } // namespace damseis::analysis

@@ -79,6 +79,20 @@ Mat tie_prolongation(const dolfinx::fem::FunctionSpace& V,
   slaves.erase(std::unique(slaves.begin(), slaves.end()), slaves.end());
   const std::vector<double> masters = all_gather(comm, masters_local);
   const std::size_t n_masters = masters.size() / 4;
+  // A node on both faces (where a joint meets bonded material, e.g. the
+  // foundation) is one dof already: it is not a slave.
+  {
+    std::vector<std::int64_t> on_first(n_masters);
+    for (std::size_t m = 0; m < n_masters; ++m)
+      on_first[m] = static_cast<std::int64_t>(masters[4 * m + 3]);
+    std::sort(on_first.begin(), on_first.end());
+    std::erase_if(slaves,
+                  [&](std::int32_t b)
+                  {
+                    return std::binary_search(on_first.begin(), on_first.end(),
+                                              first_block + b);
+                  });
+  }
 
   // Match each slave to the coincident master (sorted by x for lookup).
   std::vector<std::size_t> order(n_masters);
@@ -97,8 +111,7 @@ Mat tie_prolongation(const dolfinx::fem::FunctionSpace& V,
          ++it)
     {
       const double* q = &masters[4 * *it];
-      if (std::hypot(q[0] - p[0], q[1] - p[1], q[2] - p[2]) <= tol &&
-          static_cast<std::int64_t>(q[3]) != first_block + slaves[i])
+      if (std::hypot(q[0] - p[0], q[1] - p[1], q[2] - p[2]) <= tol)
       {
         slave_master[i] = static_cast<std::int64_t>(q[3]);
         break;

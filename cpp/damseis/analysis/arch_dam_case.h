@@ -1,0 +1,37 @@
+// Case keys of the 3D arch-dam analysis (demo `arch_dam`): the geometry
+// tables of geometry/arch_case, materials, joints, and the shared seismic
+// keys; their reading into a validated configuration (SI units).
+#pragma once
+
+#include "seismic_settings.h"
+#include <damseis/case/case.h>
+#include <damseis/fem/elastic_model.h>
+#include <damseis/geometry/arch_dam.h>
+
+namespace damseis::analysis
+{
+/// How contraction joints act in a linear analysis.
+enum class JointModel
+{
+  bonded, ///< pairs tied: the monolithic dam
+};
+
+struct ArchDamConfig
+{
+  geometry::ArchDamDefinition geometry;
+  int order = 2;
+  fem::Material concrete;
+  fem::Material rock; ///< massless foundation (rho = 0)
+  JointModel joints = JointModel::bonded;
+  SeismicSettings seismic;
+};
+
+/// Ground-motion directions in 3D: x across the canyon, y along the river
+/// (downstream), z vertical.
+const std::vector<Direction>& arch_dam_directions();
+
+input::Schema arch_dam_schema();
+
+/// Throws input::InputError (one line naming the file and key).
+ArchDamConfig read_arch_dam_config(const input::Case& c);
+} // namespace damseis::analysis

@@ -1,0 +1,94 @@
+#!/usr/bin/python3
+"""Plots of an arch-dam analysis (arch_dam demo): crest displacement
+histories and maps of the principal-stress envelopes on the upstream and
+downstream faces, each face drawn in elevation as seen by an observer in
+front of it (upstream face from upstream, downstream face from downstream).
+
+Usage: plot_arch_dam.py OUT_DIR
+Reads crest.csv, face_upstream.csv, face_downstream.csv and summary.json;
+writes crest_history.png and face_envelopes.png.
+"""
+import json
+import sys
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.tri as mtri  # noqa: E402
+import numpy as np  # noqa: E402
+
+
+def plot_crest(out: Path, summary: dict) -> None:
+    data = np.genfromtxt(out / "crest.csv", delimiter=",", names=True)
+    fig, ax = plt.subplots(figsize=(9, 4))
+    names = {"ux_m": "cross-stream (x)", "uy_m": "stream (y)",
+             "uz_m": "vertical (z)"}
+    for key, label in names.items():
+        ax.plot(data["t_s"], 100 * data[key], lw=0.9, label=label)
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel("crest displacement relative to base [cm]")
+    ax.set_title("Crown crest displacement (seismic part)")
+    ax.grid(alpha=0.3)
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(out / "crest_history.png", dpi=130)
+    plt.close(fig)
+
+
+def face_triangulation(x, z):
+    """Delaunay triangulation of the face points in elevation, without the
+    long triangles that would bridge across the outline."""
+    tri = mtri.Triangulation(x, z)
+    pts = np.column_stack([x, z])[tri.triangles]
+    edges = np.linalg.norm(pts - np.roll(pts, 1, axis=1), axis=2).max(axis=1)
+    tri.set_mask(edges > 4.0 * np.median(edges))
+    return tri
+
+
+def plot_faces(out: Path, summary: dict) -> None:
+    fig, axes = plt.subplots(2, 2, figsize=(13, 8))
+    for row, face in enumerate(("upstream", "downstream")):
+        d = np.genfromtxt(out / f"face_{face}.csv", delimiter=",", names=True)
+        # Observer in front of the face: the downstream face is seen looking
+        # upstream, so the left bank (x < 0) is on the right.
+        x = -d["x_m"] if face == "downstream" else d["x_m"]
+        tri = face_triangulation(x, d["z_m"])
+        for col, (key, title) in enumerate(
+                (("max_principal_mpa", "max principal stress (tension +)"),
+                 ("min_principal_mpa", "min principal stress (compression -)"))):
+            ax = axes[row, col]
+            cs = ax.tricontourf(tri, d[key], levels=20, cmap="RdYlBu_r")
+            fig.colorbar(cs, ax=ax, shrink=0.85, label="MPa")
+            e = summary["faces"][face][
+                "max_principal_tension_mpa" if col == 0
+                else "max_principal_compression_mpa"]
+            ex = -e["x"] if face == "downstream" else e["x"]
+            ax.plot([ex], [e["z"]], "k*", ms=9)
+            ax.set_title(f"{face} face: envelope of {title}\n"
+                         f"extreme {e['value']:.2f} MPa at t = {e['t']:.2f} s",
+                         fontsize=9)
+            ax.set_aspect("equal")
+            ax.set_xlabel("x along the dam axis [m]"
+                          + (" (mirrored: seen from downstream)"
+                             if face == "downstream" else ""))
+            ax.set_ylabel("z [m]")
+    fig.suptitle(f"Principal-stress envelopes ({summary.get('stress', 'total')}"
+                 " stress)")
+    fig.tight_layout()
+    fig.savefig(out / "face_envelopes.png", dpi=120)
+    plt.close(fig)
+
+
+def main() -> None:
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    out = Path(sys.argv[1])
+    summary = json.loads((out / "summary.json").read_text())
+    plot_crest(out, summary)
+    plot_faces(out, summary)
+
+
+if __name__ == "__main__":
+    main()
