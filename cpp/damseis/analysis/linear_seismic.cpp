@@ -241,7 +241,10 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     solver.solve(F.vec(), u_static.vec());
   }
 
+  const double static_seconds = seconds_since(wall_start);
+
   // Modal analysis, with and without the added mass.
+  const auto modal_start = Clock::now();
   fem::Modes modes = fem::solve_modes(K.mat(), M.mat(), s.modes);
   std::vector<double> dry_hz = modes.frequencies_hz;
   if (added)
@@ -257,6 +260,7 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     }
     dry_hz = fem::solve_modes(K.mat(), M0.mat(), s.modes).frequencies_hz;
   }
+  const double modal_seconds = seconds_since(modal_start);
   std::ostringstream freqs;
   for (double f : modes.frequencies_hz)
     freqs << " " << std::round(f * 1000) / 1000;
@@ -569,6 +573,8 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
       {"faces", faces},
       {"ground_motion", motion},
       {"solver", newmark.solver().name()},
+      {"setup_and_static_seconds", static_seconds},
+      {"modal_seconds", modal_seconds},
       {"factorization_seconds", newmark.solver().factor_seconds()},
       {"time_loop_seconds", loop_seconds},
       {"seconds_per_step", loop_seconds / std::max(1, n - k0)},
