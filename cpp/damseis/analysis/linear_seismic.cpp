@@ -388,9 +388,10 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
 
   auto record_state = [&](int k, double t, Vec ud)
   {
-    MatMult(B.mat(), ud, s_field.vec());
     if (s.stress_total)
-      VecAXPY(s_field.vec(), 1.0, s_static.vec());
+      MatMultAdd(B.mat(), ud, s_static.vec(), s_field.vec());
+    else
+      MatMult(B.mat(), ud, s_field.vec());
     const double* sa = nullptr;
     PetscInt ns = 0;
     VecGetLocalSize(s_field.vec(), &ns);

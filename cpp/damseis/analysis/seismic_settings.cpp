@@ -107,15 +107,15 @@ GroundMotion read_motion(const input::Case& c, const std::string& p, double dt,
   gm.active = true;
   gm.record = file.string();
   gm.description = r.description;
-  // duration < 0: the record's own length.
-  gm.acceleration =
-      motion::resample(r, dt, duration < 0 ? r.duration() : duration);
+  // The whole record is scaled to the target peak (so a run shorter than
+  // the record sees the same signal), then resampled; duration < 0 means the
+  // record's own length.
   gm.peak_g = c.real(p + ".peak_g");
   if (gm.peak_g > 0.0)
   {
     try
     {
-      motion::scale_to_peak(gm.acceleration,
+      motion::scale_to_peak(r.acceleration,
                             gm.peak_g * motion::standard_gravity);
     }
     catch (const motion::RecordError& e)
@@ -125,12 +125,9 @@ GroundMotion read_motion(const input::Case& c, const std::string& p, double dt,
     }
   }
   else
-  {
-    double peak = 0.0;
-    for (double a : gm.acceleration)
-      peak = std::max(peak, std::abs(a));
-    gm.peak_g = peak / motion::standard_gravity;
-  }
+    gm.peak_g = r.peak() / motion::standard_gravity;
+  gm.acceleration =
+      motion::resample(r, dt, duration < 0 ? r.duration() : duration);
   return gm;
 }
 

@@ -54,14 +54,14 @@ LinearNewmark::LinearNewmark(Mat M, Mat K, RayleighDamping damping,
     for (Vec& x : *set)
       MatCreateVecs(K, &x, nullptr);
   }
-  for (Vec* x : {&_f, &_rhs, &_u_next, &_a_next, &_image_next})
+  for (Vec* x : {&_f, &_rhs, &_u_next, &_image_next})
     MatCreateVecs(K, x, nullptr);
   for (std::array<Vec, 3>* set : {&_x, &_Mx, &_Kx})
   {
     for (Vec x : *set)
       VecSet(x, 0.0);
   }
-  for (Vec x : {_f, _rhs, _u_next, _a_next, _image_next})
+  for (Vec x : {_f, _rhs, _u_next, _image_next})
     VecSet(x, 0.0);
 }
 
@@ -72,7 +72,7 @@ LinearNewmark::~LinearNewmark()
     for (Vec& x : *set)
       VecDestroy(&x);
   }
-  for (Vec* x : {&_f, &_rhs, &_u_next, &_a_next, &_image_next})
+  for (Vec* x : {&_f, &_rhs, &_u_next, &_image_next})
     VecDestroy(x);
   MatDestroy(&_Keff);
 }
@@ -91,17 +91,32 @@ void LinearNewmark::set_state(Vec u, Vec v, Vec a, Vec f)
 
 namespace
 {
-/// Newmark update of one (u, v, a) triple to the new u:
+/// Newmark update of one (u, v, a) triple to the new u, in one pass:
 /// a' = a0 (u' - u) - a2 v - a3 a,  v' = v + dt ((1 - gamma) a + gamma a'),
-/// then u <- u'. `a_next` is scratch.
-void advance(std::array<Vec, 3>& x, Vec u_next, Vec a_next, double a0,
-             double a2, double a3, double dt, double gamma)
+/// u <- u'.
+void advance(std::array<Vec, 3>& x, Vec u_next, double a0, double a2, double a3,
+             double dt, double gamma)
 {
-  VecWAXPY(a_next, -1.0, x[0], u_next);
-  VecAXPBYPCZ(a_next, -a2, -a3, a0, x[1], x[2]);
-  VecAXPBYPCZ(x[1], dt * (1.0 - gamma), dt * gamma, 1.0, x[2], a_next);
-  VecCopy(a_next, x[2]);
-  VecCopy(u_next, x[0]);
+  PetscInt n = 0;
+  VecGetLocalSize(u_next, &n);
+  const double* un = nullptr;
+  double *u = nullptr, *v = nullptr, *a = nullptr;
+  VecGetArrayRead(u_next, &un);
+  VecGetArray(x[0], &u);
+  VecGetArray(x[1], &v);
+  VecGetArray(x[2], &a);
+  const double c1 = dt * (1.0 - gamma), c2 = dt * gamma;
+  for (PetscInt i = 0; i < n; ++i)
+  {
+    const double an = a0 * (un[i] - u[i]) - a2 * v[i] - a3 * a[i];
+    v[i] += c1 * a[i] + c2 * an;
+    a[i] = an;
+    u[i] = un[i];
+  }
+  VecRestoreArray(x[2], &a);
+  VecRestoreArray(x[1], &v);
+  VecRestoreArray(x[0], &u);
+  VecRestoreArrayRead(u_next, &un);
 }
 } // namespace
 
@@ -137,11 +152,11 @@ void LinearNewmark::step(Vec f_next)
   // Images of the new displacement: M u' by a product, K u' from the
   // solved equation (exact up to the solver's residual).
   MatMult(_M, _u_next, _image_next);
-  advance(_Mx, _image_next, _a_next, a0, a2, a3, dt, gamma);
+  advance(_Mx, _image_next, a0, a2, a3, dt, gamma);
   VecWAXPY(_image_next, -_cM, _Mx[0], _rhs);
   VecScale(_image_next, 1.0 / _cK);
-  advance(_Kx, _image_next, _a_next, a0, a2, a3, dt, gamma);
-  advance(_x, _u_next, _a_next, a0, a2, a3, dt, gamma);
+  advance(_Kx, _image_next, a0, a2, a3, dt, gamma);
+  advance(_x, _u_next, a0, a2, a3, dt, gamma);
   VecCopy(f_next, _f);
 }
 } // namespace damseis::dynamics

@@ -71,7 +71,6 @@ private:
   std::unique_ptr<fem::DirectSolver> _solver;
   /// (u, v, a), their M images and K images; f is the current load.
   std::array<Vec, 3> _x{}, _Mx{}, _Kx{};
-  Vec _f = nullptr, _rhs = nullptr, _u_next = nullptr, _a_next = nullptr,
-      _image_next = nullptr;
+  Vec _f = nullptr, _rhs = nullptr, _u_next = nullptr, _image_next = nullptr;
 };
 } // namespace damseis::dynamics

@@ -123,9 +123,27 @@ void DirectSolver::solve(Vec b, Vec x) const
   KSPGetConvergedReason(_ksp, &reason);
   if (reason < 0)
   {
+    // Say why the factorisation failed (MUMPS: INFOG(1), INFOG(2)).
+    std::string detail;
+    PC pc;
+    KSPGetPC(_ksp, &pc);
+    PCFailedReason pc_reason;
+    PCGetFailedReason(pc, &pc_reason);
+    detail +=
+        ", PC failed reason " + std::to_string(static_cast<int>(pc_reason));
+    if (_kind == Factorization::mumps)
+    {
+      Mat F;
+      PCFactorGetMatrix(pc, &F);
+      PetscInt info1 = 0, info2 = 0;
+      MatMumpsGetInfog(F, 1, &info1);
+      MatMumpsGetInfog(F, 2, &info2);
+      detail += ", MUMPS INFOG(1) = " + std::to_string(info1) +
+                ", INFOG(2) = " + std::to_string(info2);
+    }
     throw std::runtime_error("direct solve failed (" + name() +
                              "): PETSc reason " +
-                             std::to_string(static_cast<int>(reason)));
+                             std::to_string(static_cast<int>(reason)) + detail);
   }
 }
 
