@@ -8,7 +8,8 @@ const std::vector<Direction>& arch_dam_directions()
 {
   static const std::vector<Direction> d = {
       {"cross_stream", 0, "", 0.0},
-      {"stream", 1, "../../data/records/elcentro_1940_ns.at2", 0.2},
+      {"stream", 1, DAMSEIS_SOURCE_DIR "/data/records/elcentro_1940_ns.at2",
+       0.2},
       {"vertical", 2, "", 0.0}};
   return d;
 }

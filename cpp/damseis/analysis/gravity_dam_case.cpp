@@ -6,7 +6,8 @@ namespace damseis::analysis
 const std::vector<Direction>& gravity_dam_directions()
 {
   static const std::vector<Direction> d = {
-      {"horizontal", 0, "../../data/records/elcentro_1940_ns.at2", 0.38},
+      {"horizontal", 0, DAMSEIS_SOURCE_DIR "/data/records/elcentro_1940_ns.at2",
+       0.38},
       {"vertical", 1, "", 0.0}};
   return d;
 }
