@@ -8,7 +8,7 @@
 #include <damseis/fem/elastic_model.h>
 #include <damseis/geometry/gravity_dam.h>
 #include <damseis/geometry/tags.h>
-#include <damseis/output/progress.h>
+#include <damseis/results/progress.h>
 #include <dolfinx/la/petsc.h>
 #include <petscksp.h>
 #include <string>
@@ -32,7 +32,7 @@ double seconds(std::chrono::steady_clock::time_point t0)
 int main(int argc, char** argv)
 {
   PetscInitializeNoArguments();
-  damseis::output::quiet_library_logging();
+  damseis::results::quiet_library_logging();
   PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
   const double h = argc > 1 ? std::stod(argv[1]) : 1.0;
   const int degree = argc > 2 ? std::stoi(argv[2]) : 2;
@@ -46,8 +46,8 @@ int main(int argc, char** argv)
     ds::geometry::GravityDamSection s;
     s.mesh_size = h;
     ds::fem::ElasticModel fe(ds::geometry::build_gravity_dam(comm, s), degree,
-                         {{ds::tags::dam, {30e9, 0.2, 2500}}},
-                         ds::fem::PlaneMode::plane_stress);
+                             {{ds::tags::dam, {30e9, 0.2, 2500}}},
+                             ds::fem::PlaneMode::plane_stress);
     fe.fix({ds::tags::dam_base});
     ds::fem::Reservoir res;
     res.level = 91.75;
@@ -70,8 +70,8 @@ int main(int argc, char** argv)
     MatGetSize(A, &n, nullptr);
     if (rank == 0)
     {
-      std::printf("# Koyna section, mesh %.2f m, P%d: %d dofs, %d ranks\n\n",
-                  h, degree, static_cast<int>(n), size);
+      std::printf("# Koyna section, mesh %.2f m, P%d: %d dofs, %d ranks\n\n", h,
+                  degree, static_cast<int>(n), size);
       std::printf("| factorisation | matrix | factor [s] | solve [ms] | "
                   "rel. residual |\n|---|---|---|---|---|\n");
     }
@@ -97,8 +97,9 @@ int main(int argc, char** argv)
       if (v.serial_only && size > 1)
         continue;
       Mat B;
-      MatConvert(A, size > 1 ? ("mpi" + v.mat_type).c_str()
-                             : ("seq" + v.mat_type).c_str(),
+      MatConvert(A,
+                 size > 1 ? ("mpi" + v.mat_type).c_str()
+                          : ("seq" + v.mat_type).c_str(),
                  MAT_INITIAL_MATRIX, &B);
       MatSetOption(B, MAT_SYMMETRIC, PETSC_TRUE);
       MatSetOption(B, MAT_SPD, PETSC_TRUE);

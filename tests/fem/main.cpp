@@ -1,6 +1,6 @@
 // Test runner for the finite element tests: PETSc (and MPI) around GoogleTest.
 // Only rank 0 prints results.
-#include <damseis/output/progress.h>
+#include <damseis/results/progress.h>
 #include <gtest/gtest.h>
 #include <petscsys.h>
 
@@ -8,7 +8,7 @@ int main(int argc, char** argv)
 {
   ::testing::InitGoogleTest(&argc, argv);
   PetscInitialize(&argc, &argv, nullptr, nullptr);
-  damseis::output::quiet_library_logging();
+  damseis::results::quiet_library_logging();
   // Any PETSc error is a bug here: stop at once instead of going on.
   PetscPushErrorHandler(PetscAbortErrorHandler, nullptr);
   int rank = 0;

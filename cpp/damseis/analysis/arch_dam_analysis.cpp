@@ -3,7 +3,7 @@
 #include <damseis/fem/tied_dofs.h>
 #include <damseis/geometry/arch_mesh.h>
 #include <damseis/geometry/tags.h>
-#include <damseis/output/progress.h>
+#include <damseis/results/progress.h>
 #include <dolfinx/la/petsc.h>
 
 namespace damseis::analysis
@@ -13,7 +13,7 @@ nlohmann::json run_arch_dam_analysis(MPI_Comm comm, const ArchDamConfig& cfg,
                                      const std::string& case_text)
 {
   auto arch = geometry::build_arch_dam(comm, cfg.geometry);
-  output::print(
+  results::print(
       comm, "arch dam mesh: " + std::to_string(arch.num_cells) + " cells (" +
                 std::to_string(arch.num_dam_cells) + " in the dam), " +
                 std::to_string(arch.joints.size()) + " joints, built in " +

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <damseis/analysis/linear_seismic.h>
 #include <damseis/case/command_line.h>
-#include <damseis/output/progress.h>
+#include <damseis/results/progress.h>
 #include <filesystem>
 #include <petscsys.h>
 #include <string>
@@ -22,7 +22,7 @@ int demo_main(int argc, char** argv, const std::string& name,
               Read read, Run run)
 {
   PetscInitializeNoArguments();
-  output::quiet_library_logging();
+  results::quiet_library_logging();
   // Any PETSc error is a bug here: stop at once instead of going on.
   PetscPushErrorHandler(PetscAbortErrorHandler, nullptr);
   int rank = 0, status = 0;

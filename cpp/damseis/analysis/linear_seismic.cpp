@@ -6,11 +6,11 @@
 #include <damseis/fem/modal.h>
 #include <damseis/fem/tied_dofs.h>
 #include <damseis/geometry/tags.h>
-#include <damseis/output/face_points.h>
-#include <damseis/output/field_writer.h>
-#include <damseis/output/point_probe.h>
-#include <damseis/output/progress.h>
-#include <damseis/output/stress_envelope.h>
+#include <damseis/results/face_points.h>
+#include <damseis/results/field_writer.h>
+#include <damseis/results/point_probe.h>
+#include <damseis/results/progress.h>
+#include <damseis/results/stress_envelope.h>
 #include <dolfinx/common/IndexMap.h>
 #include <dolfinx/fem/DofMap.h>
 #include <dolfinx/la/petsc.h>
@@ -89,7 +89,7 @@ void set_owned_values(Vec x, const std::vector<double>& v)
   VecRestoreArray(x, &a);
 }
 
-json extreme_json(const output::Extreme& e, int dim)
+json extreme_json(const results::Extreme& e, int dim)
 {
   json j = {{"value", e.value * 1e-6}, {"x", e.x[0]}, {"y", e.x[1]}};
   if (dim == 3)
@@ -129,7 +129,7 @@ void write_modes(fem::ElasticModel& fe, const fem::Modes& modes,
 
 /// Writes the envelope values of the given owned points of every rank into
 /// a CSV file on rank 0.
-void write_face_csv(MPI_Comm comm, const output::StressEnvelope& env,
+void write_face_csv(MPI_Comm comm, const results::StressEnvelope& env,
                     std::span<const std::int32_t> points,
                     const std::filesystem::path& file)
 {
@@ -180,10 +180,10 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   const std::int64_t n_cells =
       model.mesh->topology().index_map(dim)->size_global();
   const std::int64_t n_dofs = fe.V()->dofmap()->index_map->size_global() * dim;
-  output::print(comm, "damseis: " + std::to_string(n_cells) + " cells, " +
-                          std::to_string(n_dofs) + " dofs, P" +
-                          std::to_string(fe.degree()) + ", " +
-                          std::to_string(ranks) + " rank(s)");
+  results::print(comm, "damseis: " + std::to_string(n_cells) + " cells, " +
+                           std::to_string(n_dofs) + " dofs, P" +
+                           std::to_string(fe.degree()) + ", " +
+                           std::to_string(ranks) + " rank(s)");
 
   const bool wet = s.reservoir.depth() > 0.0;
   const fem::Reservoir* added = s.westergaard && wet ? &s.reservoir : nullptr;
@@ -264,7 +264,7 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   std::ostringstream freqs;
   for (double f : modes.frequencies_hz)
     freqs << " " << std::round(f * 1000) / 1000;
-  output::print(comm, "natural frequencies [Hz]:" + freqs.str());
+  results::print(comm, "natural frequencies [Hz]:" + freqs.str());
 
   // Rayleigh damping.
   double f1, f2;
@@ -327,13 +327,13 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   Vector s_static = row_vector(B.mat()), s_field = row_vector(B.mat());
   MatMult(B.mat(), u_static.vec(), s_static.vec());
   const auto dam_cells = region_cells(model, tags::dam);
-  output::StressEnvelope envelope(*fe.S(), dam_cells);
+  results::StressEnvelope envelope(*fe.S(), dam_cells);
   std::vector<std::vector<std::int32_t>> face_pts;
   for (const auto& [name, tag] : s.faces)
-    face_pts.push_back(output::face_points(*fe.S(), *model.facet_tags, tag));
+    face_pts.push_back(results::face_points(*fe.S(), *model.facet_tags, tag));
 
-  output::PointProbe crest(*fe.V(), s.crest_point);
-  output::PointProbe base(*fe.V(), s.base_point);
+  results::PointProbe crest(*fe.V(), s.crest_point);
+  results::PointProbe base(*fe.V(), s.base_point);
   const auto crest_static = crest.value_on_all(full(u_static.vec()));
   const auto base_static = base.value_on_all(full(u_static.vec()));
   const int n = s.steps;
@@ -364,8 +364,8 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
         restart->arrays.at("env_max"), restart->arrays.at("env_t_max"),
         restart->arrays.at("env_min"), restart->arrays.at("env_t_min"));
     hist = restart->arrays.at("history");
-    output::print(comm, "restarting from the checkpoint at step " +
-                            std::to_string(k0));
+    results::print(comm, "restarting from the checkpoint at step " +
+                             std::to_string(k0));
   }
   else
   {
@@ -379,7 +379,7 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     newmark.set_state(zero.vec(), zero.vec(), a0.vec(), f.vec());
   }
 
-  output::FieldWriter writer(
+  results::FieldWriter writer(
       fe,
       out_dir / (k0 == 0 ? std::string("fields.xdmf")
                          : "fields_from_step" + std::to_string(k0) + ".xdmf"));
@@ -431,15 +431,15 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     write_checkpoint(comm, ckpt_dir, data, print);
   };
 
-  output::print(comm, "time history: " + std::to_string(n) + " steps of " +
-                          std::to_string(dt) + " s, factorisation " +
-                          newmark.solver().name());
+  results::print(comm, "time history: " + std::to_string(n) + " steps of " +
+                           std::to_string(dt) + " s, factorisation " +
+                           newmark.solver().name());
   if (k0 == 0)
     record_state(0, 0.0, newmark.u());
   stop_requested = 0;
   auto old_int = std::signal(SIGINT, request_stop);
   auto old_term = std::signal(SIGTERM, request_stop);
-  output::Progress progress(comm, n - k0);
+  results::Progress progress(comm, n - k0);
   const auto loop_start = Clock::now();
   for (int k = k0 + 1; k <= n; ++k)
   {
@@ -466,7 +466,7 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   std::signal(SIGINT, old_int);
   std::signal(SIGTERM, old_term);
   const double loop_seconds = seconds_since(loop_start);
-  output::reduce_history(comm, hist);
+  results::reduce_history(comm, hist);
 
   // Crest history relative to the base point.
   const char* axis = "xyz";
@@ -520,7 +520,7 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     }
   }
 
-  output::write_envelopes(fe, envelope, out_dir / "envelopes.xdmf");
+  results::write_envelopes(fe, envelope, out_dir / "envelopes.xdmf");
   json faces = json::object();
   for (std::size_t i = 0; i < s.faces.size(); ++i)
   {
@@ -583,11 +583,11 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
       {"mpi_ranks", ranks},
   };
   summary["wall_seconds"] = seconds_since(wall_start);
-  output::print(comm, "max tension " + std::to_string(tension.value * 1e-6) +
-                          " MPa, max compression " +
-                          std::to_string(compression.value * 1e-6) +
-                          " MPa, max crest displacement " +
-                          std::to_string(peak_h * 100) + " cm");
+  results::print(comm, "max tension " + std::to_string(tension.value * 1e-6) +
+                           " MPa, max compression " +
+                           std::to_string(compression.value * 1e-6) +
+                           " MPa, max crest displacement " +
+                           std::to_string(peak_h * 100) + " cm");
   return summary;
 }
 } // namespace damseis::analysis

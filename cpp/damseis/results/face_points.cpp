@@ -5,7 +5,7 @@
 #include <dolfinx/mesh/Mesh.h>
 #include <dolfinx/mesh/Topology.h>
 
-namespace damseis::output
+namespace damseis::results
 {
 std::vector<std::int32_t>
 face_points(const dolfinx::fem::FunctionSpace& S,
@@ -52,4 +52,4 @@ face_points(const dolfinx::fem::FunctionSpace& S,
   points.erase(std::unique(points.begin(), points.end()), points.end());
   return points;
 }
-} // namespace damseis::output
+} // namespace damseis::results

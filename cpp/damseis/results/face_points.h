@@ -6,7 +6,7 @@
 #include <dolfinx/mesh/MeshTags.h>
 #include <vector>
 
-namespace damseis::output
+namespace damseis::results
 {
 /// Owned points of the stress-point space S that lie on the facets tagged
 /// `tag`: for P2 models (points at cell vertices) the vertices of those
@@ -15,4 +15,4 @@ namespace damseis::output
 std::vector<std::int32_t>
 face_points(const dolfinx::fem::FunctionSpace& S,
             const dolfinx::mesh::MeshTags<std::int32_t>& facet_tags, int tag);
-} // namespace damseis::output
+} // namespace damseis::results

@@ -7,7 +7,7 @@
 #include <dolfinx/mesh/Mesh.h>
 #include <limits>
 
-namespace damseis::output
+namespace damseis::results
 {
 namespace
 {
@@ -178,4 +178,4 @@ void write_envelopes(fem::ElasticModel& model, const StressEnvelope& env,
     xdmf.write_function(*f, 0.0);
   xdmf.close();
 }
-} // namespace damseis::output
+} // namespace damseis::results

@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <memory>
 
-namespace damseis::output
+namespace damseis::results
 {
 /// Cell averages (DG0) of the stress-point values of every local cell:
 /// returns the tensor (tdim x tdim, row-major) per cell.
@@ -39,4 +39,4 @@ private:
 /// Values in Pa; NaN outside the envelope's region.
 void write_envelopes(fem::ElasticModel& model, const StressEnvelope& env,
                      const std::filesystem::path& file);
-} // namespace damseis::output
+} // namespace damseis::results

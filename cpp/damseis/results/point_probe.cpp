@@ -5,7 +5,7 @@
 #include <dolfinx/mesh/Mesh.h>
 #include <limits>
 
-namespace damseis::output
+namespace damseis::results
 {
 PointProbe::PointProbe(const dolfinx::fem::FunctionSpace& V,
                        std::array<double, 3> x)
@@ -68,4 +68,4 @@ void reduce_history(MPI_Comm comm, std::vector<double>& history)
   MPI_Allreduce(MPI_IN_PLACE, history.data(), history.size(), MPI_DOUBLE,
                 MPI_SUM, comm);
 }
-} // namespace damseis::output
+} // namespace damseis::results

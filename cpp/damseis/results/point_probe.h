@@ -6,7 +6,7 @@
 #include <petscvec.h>
 #include <vector>
 
-namespace damseis::output
+namespace damseis::results
 {
 /// Finds the node of V nearest to `x` (over all ranks) and records its
 /// displacement components on the owning rank.
@@ -32,4 +32,4 @@ private:
 
 /// Sums per-rank histories (zeros off the owner) onto every rank.
 void reduce_history(MPI_Comm comm, std::vector<double>& history);
-} // namespace damseis::output
+} // namespace damseis::results

@@ -1,7 +1,7 @@
 #include "principal.h"
 #include <Eigen/Dense>
 
-namespace damseis::output
+namespace damseis::results
 {
 std::array<double, 2> principal_extremes(const double* s, int n)
 {
@@ -20,4 +20,4 @@ std::array<double, 2> principal_extremes(const double* s, int n)
   eig.computeDirect(m, Eigen::EigenvaluesOnly);
   return {eig.eigenvalues()[2], eig.eigenvalues()[0]};
 }
-} // namespace damseis::output
+} // namespace damseis::results

@@ -2,7 +2,7 @@
 #include <cstdio>
 #include <dolfinx/common/log.h>
 
-namespace damseis::output
+namespace damseis::results
 {
 Progress::Progress(MPI_Comm comm, int total, double interval)
     : _total(total), _interval(interval),
@@ -48,4 +48,4 @@ void print(MPI_Comm comm, const std::string& line)
     std::fflush(stdout);
   }
 }
-} // namespace damseis::output
+} // namespace damseis::results

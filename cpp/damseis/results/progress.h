@@ -5,7 +5,7 @@
 #include <mpi.h>
 #include <string>
 
-namespace damseis::output
+namespace damseis::results
 {
 class Progress
 {
@@ -29,4 +29,4 @@ void quiet_library_logging();
 
 /// Prints a line on rank 0 only.
 void print(MPI_Comm comm, const std::string& line);
-} // namespace damseis::output
+} // namespace damseis::results

@@ -4,7 +4,7 @@
 #include <dolfinx/fem/DofMap.h>
 #include <limits>
 
-namespace damseis::output
+namespace damseis::results
 {
 StressEnvelope::StressEnvelope(const dolfinx::fem::FunctionSpace& S,
                                std::span<const std::int32_t> region_cells)
@@ -125,4 +125,4 @@ StressEnvelope::max_compression(MPI_Comm comm,
 {
   return global_extreme(comm, _min, _t_min, _x, candidates(subset), -1.0);
 }
-} // namespace damseis::output
+} // namespace damseis::results

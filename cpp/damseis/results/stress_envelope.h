@@ -8,7 +8,7 @@
 #include <span>
 #include <vector>
 
-namespace damseis::output
+namespace damseis::results
 {
 /// A value with where and when it occurred.
 struct Extreme
@@ -64,4 +64,4 @@ private:
   std::vector<std::array<double, 3>> _x;
   std::vector<std::int8_t> _in_region;
 };
-} // namespace damseis::output
+} // namespace damseis::results
