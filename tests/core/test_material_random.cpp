@@ -31,21 +31,27 @@ Vector6 random_direction(std::mt19937& g)
 // tension, compression, mixed and hydrostatic tension = near the apex, and
 // to the compressive meridian). Reference: the Kuhn-Tucker conditions:
 // converged and max_k f_k / fc0 <= 1e-8 at the new state.
-// KNOWN FAILURE, disabled so that the suite stays green: the local Newton
-// does not converge for about 1% of these trials in plastic mode and 7% in
-// viscoplastic mode (mostly huge increments, up to 1e-2 strain, from softened
-// states); the converged ones satisfy f <= 1e-10. Run it with
-// --gtest_also_run_disabled_tests. See README.md, "Open issues".
+// KNOWN FAILURE, disabled so that the suite stays green. With the reduced
+// (stress-eliminated) return, the active-set predictor, the HTC apex set,
+// the full-system second-line solver and the sub-stepping fall-back
+// (max_substeps = 8), 5 plastic (0.005%) and ~300 viscoplastic (0.3%) of
+// the 100,000 trials still fail (huge increments from softened states, and
+// viscoplastic steps whose tiny kappa_t share sits on the steep part of the
+// rate law); before: 1.1% and 4.3%. The converged ones satisfy
+// f <= 2e-10 fc0. Run it with --gtest_also_run_disabled_tests; see
+// README.md, "Open issues".
 TEST(MaterialRandom, DISABLED_LocalNewtonConvergesEverywhere)
 {
   for (Mode mode : {Mode::elastic, Mode::plastic, Mode::viscoplastic})
   {
     ConcreteParameters p;
     p.mode = mode;
+    p.max_substeps = 8; // the sub-stepping fall-back
     const HtcConcrete m(p);
     std::mt19937 g(12345);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     long failures = 0, plastic = 0, iters = 0, max_it = 0, passes = 0;
+    long substepped = 0;
     double worst_f = -1e300;
     const int n = 100000;
     for (int k = 0; k < n; ++k)
@@ -95,6 +101,7 @@ TEST(MaterialRandom, DISABLED_LocalNewtonConvergesEverywhere)
         ++failures;
         continue;
       }
+      substepped += up.substeps > 1;
       if (up.active)
       {
         ++plastic;
@@ -107,12 +114,13 @@ TEST(MaterialRandom, DISABLED_LocalNewtonConvergesEverywhere)
     }
     std::printf("%-12s: %d trials, %ld plastic, %ld failures, mean "
                 "iterations %.2f (max %ld), mean active-set passes %.2f, "
-                "max f/fc0 %.2e\n",
+                "max f/fc0 %.2e, sub-stepped %ld\n",
                 mode == Mode::elastic   ? "elastic"
                 : mode == Mode::plastic ? "plastic"
                                         : "viscoplastic",
                 n, plastic, failures, plastic ? double(iters) / plastic : 0.0,
-                max_it, plastic ? double(passes) / plastic : 0.0, worst_f);
+                max_it, plastic ? double(passes) / plastic : 0.0, worst_f,
+                substepped);
     EXPECT_EQ(failures, 0);
     if (mode != Mode::elastic)
       EXPECT_LE(worst_f, 1e-8);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
@@ -91,6 +92,8 @@ void lu_solve(const std::array<double, N * N>& a, const std::array<int, N>& piv,
 /// sigma1 = sigma2 follows from either pair).
 bool valid_set(unsigned s)
 {
+  if (s == htc_apex)
+    return true;
   if (s == 0 || s >= 32)
     return false;
   if ((s & htc_edge) && !(s & htc_surface))
@@ -133,8 +136,8 @@ std::string active_set_name(unsigned a)
   if (a == 0)
     return "elastic";
   std::string s;
-  const char* names[5] = {"HTC", "edge", "R1", "R2", "R3"};
-  for (int i = 0; i < 5; ++i)
+  const char* names[6] = {"HTC", "edge", "R1", "R2", "R3", "apex"};
+  for (int i = 0; i < 6; ++i)
     if (a & (1u << i))
       s += (s.empty() ? "" : "+") + std::string(names[i]);
   return s;
@@ -163,6 +166,7 @@ HtcConcrete::HtcConcrete(const ConcreteParameters& p) : p_(p)
   require(p.rate_shift_c > 0 && p.rate_shift_t > 0, "rate shifts must be > 0");
   require(p.dynamic_factor > 0, "dynamic_factor must be > 0");
   require(p.tolerance > 0 && p.max_iterations > 0, "bad Newton settings");
+  require(p.max_substeps >= 1, "max_substeps must be >= 1");
 
   const double fac = p.dynamic_30_percent ? p.dynamic_factor : 1.0;
   d_.E = fac * p.E;
@@ -336,10 +340,202 @@ void HtcConcrete::surfaces(const std::array<T, 3>& s, const T& kc, const T& kt,
 }
 
 template <class T, int M>
-void HtcConcrete::residual(const std::array<T, 5 + M>& x, const int* ids,
-                           const std::array<double, 3>& str, double kcn,
-                           double ktn, double dt, bool lc, bool lt, bool rates,
-                           std::array<T, 5 + M>& r) const
+void HtcConcrete::reduced(const T* y, const int* ids, const T* str, double kcn,
+                          double ktn, double dt, bool lc, bool lt, bool rates,
+                          T* r, T* sig) const
+{
+  using std::exp;
+  using std::log;
+  using std::sqrt;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  // Internal variables: kappa itself, or (power rate law) the log-rate
+  // y = log(1 + kappa_dot / kdot0), which makes the consistency equation
+  // nearly linear in the unknown (R = exp(delta y)).
+  T kc, kt, kcd, ktd;
+  if (lc)
+  {
+    kcd = d_.rate_c.kdot0 * (exp(y[M]) - 1.0);
+    kc = kcn + dt * kcd;
+  }
+  else
+  {
+    kc = y[M];
+    kcd = rates ? T((kc - kcn) / dt) : T(0.0);
+  }
+  if (lt)
+  {
+    ktd = d_.rate_t.kdot0 * (exp(y[M + 1]) - 1.0);
+    kt = ktn + dt * ktd;
+  }
+  else
+  {
+    kt = y[M + 1];
+    ktd = rates ? T((kt - ktn) / dt) : T(0.0);
+  }
+  // Strengths and the HTC coefficients (as in surfaces()).
+  const T Rc =
+      rates ? d_.rate_c(vmax(kcd, T(-0.999 * d_.rate_c.kdot0))) : T(1.0);
+  const T Rt =
+      rates ? d_.rate_t(vmax(ktd, T(-0.999 * d_.rate_t.kdot0))) : T(1.0);
+  const T fc = d_.fc0 * hc(kc) * Rc;
+  const T ft = d_.ft0 * exp(-kt / d_.kappa_tu) * Rt;
+  const T ftH =
+      vmin(vmax(T((1.0 + p_.htc_tension_offset) * ft), T(p_.rho_min * fc)),
+           T(p_.rho_max * fc));
+  const T ifc = 1.0 / fc;
+  const auto X = family_.coefficients(T(ftH * ifc));
+  const double f0 = d_.fc0, G2 = 2.0 * d_.G, K = d_.K;
+  // Gradient of the HTC branch k: n_k = a(q) s + b 1 + c e_k with
+  // a(q) = alpha + beta / q, q = sqrt(J2).
+  const T alpha = f0 * X[0] * ifc * ifc, beta = 0.5 * f0 * X[1] * ifc;
+  const T b = f0 * X[3] * ifc, c = f0 * X[2] * ifc;
+  T lam(0.0), lh0(0.0), lh1(0.0), la(0.0);
+  std::array<T, 3> er = {T(0.0), T(0.0), T(0.0)};
+  bool any_h = false, any_r = false, apex = false;
+  for (int j = 0; j < M; ++j)
+  {
+    const int k = ids[j];
+    if (k < 2)
+    {
+      (k == 0 ? lh0 : lh1) = y[j];
+      lam += y[j];
+      any_h = true;
+    }
+    else if (k == 5)
+    {
+      // Apex of the HTC: the sigma_max term flows along the centroid of
+      // its subdifferential, (e1 + e2 + e3) / 3, the deviator entirely.
+      la = y[j] / 3.0;
+      lam += y[j];
+      any_h = apex = true;
+    }
+    else
+    {
+      er[k - 2] = y[j];
+      any_r = true;
+    }
+  }
+  // sigma = sigma_tr - D (lam (a s + b 1) + v), v = c (l0 e1 + l1 e2) + er:
+  // the deviator is s = S* / (1 + 2G lam a(q)), S* = dev(sigma_tr - 2G v),
+  // so q (1 + 2G lam alpha) + 2G lam beta = q* (closed form); q <= 0 means
+  // the return reaches the HTC apex (s = 0).
+  const std::array<T, 3> v = {c * (lh0 + la) + er[0], c * (lh1 + la) + er[1],
+                              c * la + er[2]};
+  const T trv = v[0] + v[1] + v[2];
+  const T ptr = (str[0] + str[1] + str[2]) / 3.0;
+  std::array<T, 3> Ss;
+  for (int i = 0; i < 3; ++i)
+    Ss[i] = str[i] - ptr - G2 * (v[i] - trv / 3.0);
+  const T qs2 = 0.5 * (Ss[0] * Ss[0] + Ss[1] * Ss[1] + Ss[2] * Ss[2]);
+  const T p = ptr - K * (3.0 * lam * b + trv);
+  std::array<T, 3> ds = {T(0.0), T(0.0), T(0.0)}, ed = ds;
+  T q(0.0);
+  const double tiny = 1e-30 * f0 * f0;
+  const bool pos = value(qs2) > tiny;
+  const T qs = pos ? sqrt(qs2) : T(0.0);
+  if (!any_h)
+    ds = Ss; // Rankine planes only: linear
+  else if (!apex && pos && value(qs - G2 * lam * beta) > 0.0)
+  {
+    const T den = 1.0 + G2 * lam * alpha;
+    q = (qs - G2 * lam * beta) / den;
+    const T fs = q / qs, fe = lam * (alpha * qs + beta) / (den * qs);
+    for (int i = 0; i < 3; ++i)
+    {
+      ds[i] = Ss[i] * fs;
+      ed[i] = Ss[i] * fe; // lam a(q) s, without cancellation
+    }
+  }
+  else if (pos)
+    for (int i = 0; i < 3; ++i)
+      ed[i] = Ss[i] / G2; // apex: the whole deviator flows
+  for (int i = 0; i < 3; ++i)
+    sig[i] = p + ds[i];
+  // Yield functions of the active set, scaled by 1/fc0.
+  const T I1 = 3.0 * p, J2 = q * q;
+  const T common = X[0] * J2 * ifc * ifc + X[1] * q * ifc + X[3] * I1 * ifc;
+  for (int j = 0; j < M; ++j)
+  {
+    const int k = ids[j];
+    r[j] = k < 2 || k == 5 ? T(common + X[2] * sig[k == 5 ? 0 : k] * ifc - 1.0)
+                           : T((sig[k - 2] - ft) / f0);
+  }
+  // Flow of the HTC branches and of the Rankine planes.
+  std::array<T, 3> eh;
+  for (int i = 0; i < 3; ++i)
+    eh[i] = ed[i] + lam * b;
+  eh[0] += c * (lh0 + la);
+  eh[1] += c * (lh1 + la);
+  eh[2] += c * la;
+  T nh(0.0), nr(0.0);
+  if (any_h)
+  {
+    nh = sqrt(eh[0] * eh[0] + eh[1] * eh[1] + eh[2] * eh[2]);
+    if (value(nh) == 0.0)
+    {
+      // Kink of the norm at zero multipliers: one-sided derivative
+      // sum lambda_k |n_k| (same value, zero).
+      const T a0 = pos ? T(alpha + beta / qs) : T(0.0);
+      T sh(0.0);
+      for (int br = 0; br < 2; ++br)
+      {
+        T n2(0.0);
+        for (int i = 0; i < 3; ++i)
+        {
+          const T g = a0 * Ss[i] + b + (i == br ? c : T(0.0));
+          n2 += g * g;
+        }
+        sh += (br == 0 ? lh0 : lh1) * sqrt(n2);
+      }
+      nh = sh;
+    }
+    else if (rates && value(lam) < 0.0)
+      nh = -nh; // signed: no spurious roots with negative multipliers
+  }
+  if (any_r)
+  {
+    nr = sqrt(er[0] * er[0] + er[1] * er[1] + er[2] * er[2]);
+    if (value(nr) == 0.0)
+      nr = er[0] + er[1] + er[2];
+    else if (rates && value(er[0] + er[1] + er[2]) < 0.0)
+      nr = -nr;
+  }
+  // Lee & Fenves stress weight (|x| smoothed with 1e-6 fc0).
+  const double e2 = 1e-12 * f0 * f0;
+  T sa(0.0), sp(0.0);
+  for (int i = 0; i < 3; ++i)
+  {
+    const T a = sqrt(sig[i] * sig[i] + e2);
+    sa += a;
+    sp += 0.5 * (sig[i] + a);
+  }
+  const T w = sp / sa;
+  const T dkc = (1.0 - w) * c23 * nh;
+  const T dkt = w * c23 * nh + c23 * nr;
+  const double sK = d_.E / f0;
+  if (lc)
+  {
+    const T arg = 1.0 + dkc / (dt * d_.rate_c.kdot0);
+    // scaled by the exponent: the relative error of R, like the others
+    r[M] = value(arg) > 0.0 ? T((y[M] - log(arg)) * d_.rate_c.delta) : T(nan);
+  }
+  else
+    r[M] = (kc - kcn - dkc) * sK;
+  if (lt)
+  {
+    const T arg = 1.0 + dkt / (dt * d_.rate_t.kdot0);
+    r[M + 1] =
+        value(arg) > 0.0 ? T((y[M + 1] - log(arg)) * d_.rate_t.delta) : T(nan);
+  }
+  else
+    r[M + 1] = (kt - ktn - dkt) * sK;
+}
+
+template <class T, int M>
+void HtcConcrete::residual_full(const std::array<T, 5 + M>& x, const int* ids,
+                                const std::array<double, 3>& str, double kcn,
+                                double ktn, double dt, bool lc, bool lt,
+                                bool rates, std::array<T, 5 + M>& r) const
 {
   using std::abs;
   using std::exp;
@@ -434,12 +630,12 @@ void HtcConcrete::residual(const std::array<T, 5 + M>& x, const int* ids,
 }
 
 template <int M>
-bool HtcConcrete::solve_set(unsigned set, const std::array<double, 3>& str,
-                            double kcn, double ktn, double kcd_old,
-                            double ktd_old, double dt,
-                            std::array<double, 9>& xout,
-                            std::array<double, 9>& dsig_dtr,
-                            int& iterations) const
+bool HtcConcrete::solve_full(unsigned set, const std::array<double, 3>& str,
+                             double kcn, double ktn, double kcd_old,
+                             double ktd_old, double dt,
+                             std::array<double, 9>& xout,
+                             std::array<double, 9>& dsig_dtr,
+                             int& iterations) const
 {
   constexpr int N = 5 + M;
   using D = Dual<N>;
@@ -496,7 +692,7 @@ bool HtcConcrete::solve_set(unsigned set, const std::array<double, 3>& str,
     {
       for (int i = 0; i < N; ++i)
         xd[i] = D::variable(x[i], i);
-      residual<D, M>(xd, ids, str, kcn, ktn, dt, lcx, ltx, rates, rd);
+      residual_full<D, M>(xd, ids, str, kcn, ktn, dt, lcx, ltx, rates, rd);
       const double r0 = norm(rd), m0 = merit(rd);
       for (int i = 0; i < N; ++i)
       {
@@ -528,7 +724,8 @@ bool HtcConcrete::solve_set(unsigned set, const std::array<double, 3>& str,
       {
         for (int i = 0; i < N; ++i)
           xt[i] = x[i] + alpha * dx[i];
-        residual<double, M>(xt, ids, str, kcn, ktn, dt, lcx, ltx, rates, rt);
+        residual_full<double, M>(xt, ids, str, kcn, ktn, dt, lcx, ltx, rates,
+                                 rt);
         if (merit(rt) < (1.0 - 1e-4 * alpha) * m0)
         {
           ok = true;
@@ -586,8 +783,344 @@ bool HtcConcrete::solve_set(unsigned set, const std::array<double, 3>& str,
   return true;
 }
 
+template <int M>
+bool HtcConcrete::solve_set(unsigned set, const std::array<double, 3>& str,
+                            double kcn, double ktn, double kcd_old,
+                            double ktd_old, double dt, bool patient,
+                            std::array<double, 9>& xout,
+                            std::array<double, 9>& dsig_dtr,
+                            int& iterations) const
+{
+  constexpr int N = M + 2;
+  using D = Dual<N>;
+  int ids[M];
+  int m = 0;
+  for (int k = 0; k < 6; ++k)
+    if (set & (1u << k))
+      ids[m++] = k;
+  (void)m;
+  const D strd[3] = {D(str[0]), D(str[1]), D(str[2])};
+  std::array<D, N> yd, rd;
+  std::array<double, N * N> J;
+  std::array<int, N> piv;
+  std::array<double, N> dy, yt, rt;
+  double sig[3];
+  D sigd[3];
+  const double lmax =
+      10.0 * (std::abs(str[0]) + std::abs(str[1]) + std::abs(str[2]) + d_.fc0) /
+      d_.E; // bound on any multiplier (strain units)
+
+  // Damped Newton on the reduced system; on success y is converged.
+  auto newton = [&](bool lc, bool lt, bool rates,
+                    std::array<double, N>& y) -> bool
+  {
+    auto merit = [&](const auto& r)
+    {
+      double v = 0;
+      for (int i = 0; i < N; ++i)
+        v += value(r[i]) * value(r[i]);
+      return std::isfinite(v) ? v : std::numeric_limits<double>::infinity();
+    };
+    double hist[4] = {0, 0, 0, 0}; // merit of the last iterations
+    for (int it = 0; it < p_.max_iterations; ++it)
+    {
+      for (int i = 0; i < N; ++i)
+        yd[i] = D::variable(y[i], i);
+      reduced<D, M>(yd.data(), ids, strd, kcn, ktn, dt, lc, lt, rates,
+                    rd.data(), sigd);
+      double r0 = 0;
+      for (int i = 0; i < N; ++i)
+        r0 = std::max(r0, std::abs(rd[i].v));
+      if (!std::isfinite(r0))
+        return false;
+      if (r0 < p_.tolerance)
+        return true;
+      const double m0 = merit(rd);
+      // A set without a solution makes the iteration stall: give up when
+      // the merit has not halved over four iterations (the caller tries
+      // other sets, and all of them patiently if needed).
+      if (!patient && it >= 4 && m0 > 0.5 * hist[it % 4])
+        return false;
+      hist[it % 4] = m0;
+      for (int i = 0; i < N; ++i)
+      {
+        dy[i] = -rd[i].v;
+        for (int j = 0; j < N; ++j)
+          J[i * N + j] = rd[i].d[j];
+      }
+      if (!lu_factor<N>(J, piv))
+        return false;
+      lu_solve<N>(J, piv, dy);
+      ++iterations;
+      // Step limits: log-rates by 2 (a factor e^2 on the rate), multipliers
+      // and plain kappas within a bound of the whole return.
+      double alpha = 1.0;
+      for (int i = 0; i < N; ++i)
+      {
+        const bool logv = (i == M && lc) || (i == M + 1 && lt);
+        const double lim = logv ? 2.0 : lmax;
+        if (std::abs(dy[i]) > lim)
+          alpha = std::min(alpha, lim / std::abs(dy[i]));
+      }
+      bool ok = false;
+      for (int ls = 0; ls < 40; ++ls)
+      {
+        for (int i = 0; i < N; ++i)
+          yt[i] = y[i] + alpha * dy[i];
+        double st[3] = {str[0], str[1], str[2]};
+        reduced<double, M>(yt.data(), ids, st, kcn, ktn, dt, lc, lt, rates,
+                           rt.data(), sig);
+        const double mt = merit(rt);
+        if (mt <= (1.0 - 1e-4 * alpha) * m0)
+        {
+          ok = true;
+          break;
+        }
+        // Quadratic model of the merit along the step (slope -2 m0).
+        const double an = m0 * alpha * alpha / (mt - m0 + 2.0 * m0 * alpha);
+        alpha = std::isfinite(mt) ? std::clamp(an, 0.1 * alpha, 0.5 * alpha)
+                                  : 0.25 * alpha;
+      }
+      if (!ok)
+        return false;
+      y = yt;
+    }
+    return false;
+  };
+
+  const bool rates = rate_on_;
+  bool lc = false, lt = false;
+  std::array<double, N> y{};
+  y[M] = kcn;
+  y[M + 1] = ktn;
+  // Rate-independent return first: the predictor of the viscoplastic one
+  // (an upper bound of its increments; the surfaces only grow with rate).
+  bool ok = newton(false, false, false, y);
+  if (rates)
+  {
+    // Log-rate unknowns (power law) for the mechanisms that flow, from the
+    // rate-independent increments (from the right: the consistency
+    // equation is concave in the log-rate, Newton does not overshoot).
+    const std::array<double, N> yp = y;
+    auto from =
+        [&](const std::array<double, N>& src, double rc, double rt2, bool force)
+    {
+      y = src;
+      (void)force;
+      lc = log_c_;
+      lt = log_t_;
+      if (lc)
+        y[M] = std::log1p(std::max(rc, 0.0) / d_.rate_c.kdot0);
+      if (lt)
+        y[M + 1] = std::log1p(std::max(rt2, 0.0) / d_.rate_t.kdot0);
+    };
+    bool done = false;
+    if (ok)
+    {
+      from(yp, (yp[M] - kcn) / dt, (yp[M + 1] - ktn) / dt, false);
+      done = newton(lc, lt, true, y);
+    }
+    if (!done)
+    {
+      // From zero multipliers and the old rates, then from zero rates.
+      std::array<double, N> y0{};
+      y0[M] = kcn;
+      y0[M + 1] = ktn;
+      for (int attempt = 0; attempt < 2 && !done; ++attempt)
+      {
+        const double a = attempt == 0 ? 1.0 : 0.0;
+        from(y0, a * kcd_old, a * ktd_old, attempt == 1);
+        done = newton(lc, lt, true, y);
+      }
+    }
+    ok = done;
+  }
+  if (!ok)
+    return false;
+
+  // Polishing step and consistent tangent: derivatives of the residual and
+  // of the stresses with respect to y and to the trial principal stresses.
+  using DT = Dual<N + 3>;
+  std::array<DT, N> yT, rT;
+  DT sT[3], sigT[3];
+  for (int i = 0; i < N; ++i)
+    yT[i] = DT::variable(y[i], i);
+  for (int i = 0; i < 3; ++i)
+    sT[i] = DT::variable(str[i], N + i);
+  reduced<DT, M>(yT.data(), ids, sT, kcn, ktn, dt, lc, lt, rates, rT.data(),
+                 sigT);
+  for (int i = 0; i < N; ++i)
+  {
+    dy[i] = -rT[i].v;
+    for (int j = 0; j < N; ++j)
+      J[i * N + j] = rT[i].d[j];
+  }
+  if (!lu_factor<N>(J, piv))
+    return false;
+  lu_solve<N>(J, piv, dy);
+  for (int i = 0; i < N; ++i)
+    y[i] += dy[i];
+  for (int c = 0; c < 3; ++c)
+  {
+    std::array<double, N> e;
+    for (int i = 0; i < N; ++i)
+      e[i] = rT[i].d[N + c];
+    lu_solve<N>(J, piv, e); // dy/dstr_c = -e
+    for (int i = 0; i < 3; ++i)
+    {
+      double s = sigT[i].d[N + c];
+      for (int j = 0; j < N; ++j)
+        s -= sigT[i].d[j] * e[j];
+      dsig_dtr[i * 3 + c] = s;
+    }
+  }
+  {
+    double st[3] = {str[0], str[1], str[2]};
+    reduced<double, M>(y.data(), ids, st, kcn, ktn, dt, lc, lt, rates,
+                       rt.data(), sig);
+  }
+  xout = {};
+  for (int i = 0; i < 3; ++i)
+    xout[i] = sig[i];
+  xout[3] = lc ? kcn + dt * d_.rate_c.kdot0 * std::expm1(y[M]) : y[M];
+  xout[4] = lt ? ktn + dt * d_.rate_t.kdot0 * std::expm1(y[M + 1]) : y[M + 1];
+  for (int j = 0; j < M; ++j)
+    xout[5 + j] = y[j];
+  return true;
+}
+
+unsigned
+HtcConcrete::predict_set(const std::array<double, 3>& str, double kc, double kt,
+                         const std::array<double, 5>& phi,
+                         const std::array<std::array<double, 3>, 5>& n) const
+{
+  // Frozen surfaces (old internal variables, static rates): one
+  // cutting-plane step per mechanism, closed form for the Rankine planes.
+  const double tol = p_.tolerance * d_.fc0;
+  const bool vh = phi[0] > tol, vr = phi[2] > tol;
+  const double ft = str[0] - phi[2];
+  const double a = d_.lambda + 2.0 * d_.G, l = d_.lambda;
+  // Rankine return: number of planes and the returned stresses.
+  unsigned rset = rankine_1;
+  std::array<double, 3> sr;
+  {
+    const double mu = (str[0] - ft) / a;
+    sr = {ft, str[1] - l * mu, str[2] - l * mu};
+    if (sr[1] > ft)
+    {
+      rset |= rankine_2;
+      // sigma_1 = sigma_2 = ft: mu1 + mu2 = (s1 + s2 - 2 ft) / (a + l)
+      const double ms = (str[0] + str[1] - 2.0 * ft) / (a + l);
+      sr = {ft, ft, str[2] - l * ms};
+      if (sr[2] > ft)
+      {
+        rset |= rankine_3;
+        sr = {ft, ft, ft};
+      }
+    }
+  }
+  // HTC cutting plane: Lambda = phi / (n . D n); edge if sigma_1 < sigma_2.
+  unsigned hset = htc_surface;
+  std::array<double, 3> sh = str;
+  {
+    const auto& g = n[0];
+    const double tr = g[0] + g[1] + g[2];
+    double Dn[3], nDn = 0;
+    for (int i = 0; i < 3; ++i)
+    {
+      Dn[i] = l * tr + 2.0 * d_.G * g[i];
+      nDn += g[i] * Dn[i];
+    }
+    const double lam = nDn > 0.0 ? std::max(phi[0], 0.0) / nDn : 0.0;
+    for (int i = 0; i < 3; ++i)
+      sh[i] = str[i] - lam * Dn[i];
+    if (sh[0] < sh[1])
+      hset |= htc_edge;
+  }
+  if (vr && !vh)
+    return rset;
+  if (vh && !vr)
+    return hset;
+  // Both violated: the Rankine return if it satisfies the HTC, the HTC
+  // return if it satisfies the Rankine planes, else both.
+  std::array<double, 5> ph;
+  surfaces<double>(sr, kc, kt, 0.0, 0.0, ph, nullptr);
+  if (std::max(ph[0], ph[1]) <= tol)
+    return rset;
+  const double sm = std::max(sh[0], sh[1]);
+  if (sm <= ft)
+    return hset;
+  return hset & htc_edge ? (hset | rankine_1) : (htc_surface | rankine_1);
+}
+
 Update HtcConcrete::integrate(const State& old, const Vector6& de,
                               double dt) const
+{
+  Update u = integrate_step(old, de, dt);
+  if (u.converged)
+    return u;
+  // Optional fall-back for the rare increments the single backward-Euler
+  // step cannot solve (very large strain increments from softened states):
+  // n equal sub-steps of de and dt, n = 2, 4, ..., max_substeps. The tangent of
+  // the composite map is taken by central differences of the whole sub-stepped
+  // map.
+  auto substepped = [&](const Vector6& e, int n, Update& out) -> bool
+  {
+    Vector6 de_n;
+    for (int i = 0; i < 6; ++i)
+      de_n[i] = e[i] / n;
+    State s = old;
+    out.iterations = out.passes = 0;
+    for (int k = 0; k < n; ++k)
+    {
+      const Update v = integrate_step(s, de_n, dt / n);
+      out.iterations += v.iterations;
+      out.passes += v.passes;
+      if (!v.converged)
+        return false;
+      s = v.state;
+      out.active |= v.active;
+      out.tangent = v.tangent;
+    }
+    out.state = s;
+    return true;
+  };
+  for (int n = 2; n <= p_.max_substeps; n *= 2)
+  {
+    Update w;
+    if (!substepped(de, n, w))
+    {
+      u.iterations += w.iterations;
+      u.passes += w.passes;
+      continue;
+    }
+    w.iterations += u.iterations;
+    w.passes += u.passes;
+    w.substeps = n;
+    double scale = 0;
+    for (int i = 0; i < 6; ++i)
+      scale = std::max(scale, std::abs(de[i]));
+    const double h = 1e-6 * std::max(scale, 1e-6);
+    bool fd_ok = true;
+    for (int j = 0; j < 6 && fd_ok; ++j)
+    {
+      Vector6 ep = de, em = de;
+      ep[j] += h;
+      em[j] -= h;
+      Update a, b;
+      fd_ok = substepped(ep, n, a) && substepped(em, n, b);
+      for (int i = 0; i < 6 && fd_ok; ++i)
+        w.tangent[i * 6 + j] =
+            (a.state.stress[i] - b.state.stress[i]) / (2.0 * h);
+    }
+    w.converged = true;
+    return w;
+  }
+  return u;
+}
+
+Update HtcConcrete::integrate_step(const State& old, const Vector6& de,
+                                   double dt) const
 {
   Update u;
   u.state = old;
@@ -626,67 +1159,68 @@ Update HtcConcrete::integrate(const State& old, const Vector6& de,
   const Eigen::Vector3d nv[3] = {es.eigenvectors().col(2),
                                  es.eigenvectors().col(1),
                                  es.eigenvectors().col(0)};
-  surfaces<double>(str, old.kappa_c, old.kappa_t, 0.0, 0.0, phi, nullptr);
-  unsigned set = 0;
-  for (int k = 0; k < 5; ++k)
-    if (phi[k] > tol_f)
-      set |= 1u << k;
-  set = close_set(set);
-  if (!valid_set(set))
-    set = htc_surface;
+  std::array<std::array<double, 3>, 5> ng;
+  surfaces<double>(str, old.kappa_c, old.kappa_t, 0.0, 0.0, phi, &ng);
+  const unsigned set0 = predict_set(str, old.kappa_c, old.kappa_t, phi, ng);
+  unsigned set = set0;
 
   std::array<double, 9> x{}, C{};
   const double tol_viol = 1e-8 * d_.fc0, tol_lam = -1e-13;
-  unsigned visited_lo = 0; // bit s: set s already tried
-  auto tried = [&](unsigned s) { return (visited_lo >> s) & 1u; };
+  std::uint64_t visited = 0; // bit s: set s already tried
+  auto tried = [&](unsigned s) { return (visited >> s) & 1u; };
 
   // Solves one set and checks the Kuhn-Tucker conditions; returns 0 if
   // consistent, otherwise the next set to try (or 0xff if none).
-  auto attempt = [&](unsigned s, bool& consistent) -> unsigned
+  auto attempt = [&](unsigned s, bool patient, bool& consistent) -> unsigned
   {
     consistent = false;
-    visited_lo |= 1u << s;
+    visited |= 1ull << s;
     ++u.passes;
     const int m = std::popcount(s);
     bool ok = false;
+    const double kc = old.kappa_c, kt = old.kappa_t;
+    const double kcd = old.kappa_c_rate, ktd = old.kappa_t_rate;
     switch (m)
     {
     case 1:
-      ok = solve_set<1>(s, str, old.kappa_c, old.kappa_t, old.kappa_c_rate,
-                        old.kappa_t_rate, dt, x, C, u.iterations);
+      ok = solve_set<1>(s, str, kc, kt, kcd, ktd, dt, patient, x, C,
+                        u.iterations);
       break;
     case 2:
-      ok = solve_set<2>(s, str, old.kappa_c, old.kappa_t, old.kappa_c_rate,
-                        old.kappa_t_rate, dt, x, C, u.iterations);
+      ok = solve_set<2>(s, str, kc, kt, kcd, ktd, dt, patient, x, C,
+                        u.iterations);
       break;
     case 3:
-      ok = solve_set<3>(s, str, old.kappa_c, old.kappa_t, old.kappa_c_rate,
-                        old.kappa_t_rate, dt, x, C, u.iterations);
+      ok = solve_set<3>(s, str, kc, kt, kcd, ktd, dt, patient, x, C,
+                        u.iterations);
       break;
     default:
-      ok = solve_set<4>(s, str, old.kappa_c, old.kappa_t, old.kappa_c_rate,
-                        old.kappa_t_rate, dt, x, C, u.iterations);
+      ok = solve_set<4>(s, str, kc, kt, kcd, ktd, dt, patient, x, C,
+                        u.iterations);
     }
-    if (!ok && rate_on_ && (old.kappa_c_rate > 0.0 || old.kappa_t_rate > 0.0))
+    if (!ok && s != htc_apex)
     {
-      // Retry from zero rates (the old rates can be far from this step's).
-      switch (m)
+      // Second line: the full (stresses, kappas, multipliers) system from
+      // the old rates, then from zero rates.
+      for (int a = 0; a < 2 && !ok; ++a)
       {
-      case 1:
-        ok = solve_set<1>(s, str, old.kappa_c, old.kappa_t, -1.0, -1.0, dt, x,
-                          C, u.iterations);
-        break;
-      case 2:
-        ok = solve_set<2>(s, str, old.kappa_c, old.kappa_t, -1.0, -1.0, dt, x,
-                          C, u.iterations);
-        break;
-      case 3:
-        ok = solve_set<3>(s, str, old.kappa_c, old.kappa_t, -1.0, -1.0, dt, x,
-                          C, u.iterations);
-        break;
-      default:
-        ok = solve_set<4>(s, str, old.kappa_c, old.kappa_t, -1.0, -1.0, dt, x,
-                          C, u.iterations);
+        const double c = a == 0 ? kcd : -1.0, t = a == 0 ? ktd : -1.0;
+        switch (m)
+        {
+        case 1:
+          ok = solve_full<1>(s, str, kc, kt, c, t, dt, x, C, u.iterations);
+          break;
+        case 2:
+          ok = solve_full<2>(s, str, kc, kt, c, t, dt, x, C, u.iterations);
+          break;
+        case 3:
+          ok = solve_full<3>(s, str, kc, kt, c, t, dt, x, C, u.iterations);
+          break;
+        default:
+          ok = solve_full<4>(s, str, kc, kt, c, t, dt, x, C, u.iterations);
+        }
+        if (!rate_on_ || (kcd <= 0.0 && ktd <= 0.0))
+          break;
       }
     }
     if (!ok)
@@ -694,7 +1228,7 @@ Update HtcConcrete::integrate(const State& old, const Vector6& de,
     // Negative multipliers: drop the most negative one.
     int j = 0, worst = -1;
     double wl = tol_lam;
-    for (int k = 0; k < 5; ++k)
+    for (int k = 0; k < 6; ++k)
       if (s & (1u << k))
       {
         if (x[5 + j] < wl)
@@ -716,10 +1250,10 @@ Update HtcConcrete::integrate(const State& old, const Vector6& de,
       return ns;
     }
     // Violated inactive surfaces: add the most violated one.
-    const double kcd = rate_on_ ? (x[3] - old.kappa_c) / dt : 0.0;
-    const double ktd = rate_on_ ? (x[4] - old.kappa_t) / dt : 0.0;
+    const double kcdn = rate_on_ ? (x[3] - old.kappa_c) / dt : 0.0;
+    const double ktdn = rate_on_ ? (x[4] - old.kappa_t) / dt : 0.0;
     std::array<double, 5> ph;
-    surfaces<double>({x[0], x[1], x[2]}, x[3], x[4], kcd, ktd, ph, nullptr);
+    surfaces<double>({x[0], x[1], x[2]}, x[3], x[4], kcdn, ktdn, ph, nullptr);
     int add = -1;
     double wv = tol_viol;
     for (int k = 0; k < 5; ++k)
@@ -735,31 +1269,53 @@ Update HtcConcrete::integrate(const State& old, const Vector6& de,
   };
 
   bool consistent = false;
-  for (int pass = 0; pass < 8 && !consistent; ++pass)
+  bool apex_tried = false;
+  for (int pass = 0; pass < 6 && !consistent; ++pass)
   {
-    const unsigned next = attempt(set, consistent);
+    unsigned next = attempt(set, false, consistent);
     if (consistent)
       break;
-    if (next == 0xffu || !valid_set(next) || tried(next))
+    if (next == 0xffu && (set & htc_edge) && !apex_tried)
+    {
+      // The edge set is singular at the apex (a near-hydrostatic tensile
+      // trial state on a softened HTC): the apex set.
+      next = htc_apex;
+      apex_tried = true;
+    }
+    else if (next == 0xffu || !valid_set(next) || tried(next))
       break;
     set = next;
   }
   if (!consistent)
   {
-    // Fall-back: every valid set, smallest first.
-    for (int size = 1; size <= 4 && !consistent; ++size)
-      for (unsigned s = 1; s < 32 && !consistent; ++s)
-        if (valid_set(s) && std::popcount(s) == size && !tried(s))
-        {
-          attempt(s, consistent);
-          if (consistent)
-            set = s;
-        }
+    // Fall-back: every valid set, the likely ones first, without the early
+    // exit of the Newton iteration.
+    static constexpr unsigned order[10] = {rankine_1,
+                                           htc_surface,
+                                           htc_apex,
+                                           htc_surface | htc_edge,
+                                           rankine_1 | rankine_2,
+                                           rankine_1 | rankine_2 | rankine_3,
+                                           htc_surface | rankine_1,
+                                           htc_surface | htc_edge | rankine_1,
+                                           htc_surface | rankine_1 | rankine_2,
+                                           htc_surface | rankine_1 | rankine_2 |
+                                               rankine_3};
+    visited = 0;
+    for (unsigned s : order)
+    {
+      attempt(s, true, consistent);
+      if (consistent)
+      {
+        set = s;
+        break;
+      }
+    }
   }
   if (!consistent)
   {
     u.converged = false;
-    u.active = set;
+    u.active = set0;
     return u;
   }
 

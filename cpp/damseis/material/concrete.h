@@ -70,6 +70,11 @@ struct ConcreteParameters
   /// Local Newton: scaled residual tolerance and iteration limit.
   double tolerance = 1e-10;
   int max_iterations = 60;
+  /// > 1: a step that does not converge is retried with 2, 4, ... up to
+  /// max_substeps equal sub-steps (composite tangent by central
+  /// differences). Off by default: the callers (path driver, FE solver) cut
+  /// their own steps, and the finite-difference tangent is expensive.
+  int max_substeps = 1;
 };
 
 /// State at a material point.
@@ -89,7 +94,8 @@ enum Surface : unsigned
   htc_edge = 2u,    ///< HTC second branch (compressive meridian edge)
   rankine_1 = 4u,   ///< sigma_1 <= ft
   rankine_2 = 8u,   ///< sigma_2 <= ft
-  rankine_3 = 16u   ///< sigma_3 <= ft
+  rankine_3 = 16u,  ///< sigma_3 <= ft
+  htc_apex = 32u    ///< the HTC apex (hydrostatic stress, alone)
 };
 
 /// "elastic", or the active surfaces joined by '+', e.g. "HTC+edge", "R1+R2".
@@ -103,6 +109,7 @@ struct Update
   unsigned active = 0; ///< Surface bits of the converged active set
   int iterations = 0;  ///< local Newton iterations (all active-set passes)
   int passes = 0;      ///< active sets tried
+  int substeps = 1;    ///< > 1: the sub-stepping fall-back was used
   bool converged = true;
 };
 
@@ -160,18 +167,42 @@ public:
                 std::array<std::array<T, 3>, 5>* n) const;
 
 private:
+  /// One backward-Euler step (no sub-stepping).
+  Update integrate_step(const State& old, const Vector6& d_strain,
+                        double dt) const;
+  /// Solves one active set (Surface bits) of the return map; x = (sigma_1..3,
+  /// kappa_c, kappa_t, multipliers), dsig_dtr = d(sigma)/d(trial sigma) in
+  /// principal space (row-major 3x3). patient: no early exit on stalling.
   template <int M>
   bool solve_set(unsigned set, const std::array<double, 3>& str, double kcn,
                  double ktn, double kcd_old, double ktd_old, double dt,
-                 std::array<double, 9>& x, std::array<double, 9>& dsig_dtr,
-                 int& iterations) const;
+                 bool patient, std::array<double, 9>& x,
+                 std::array<double, 9>& dsig_dtr, int& iterations) const;
+  /// The full system (principal stresses, kappas, multipliers; exact
+  /// Jacobian by AD): the second-line solver of a set.
+  template <int M>
+  bool solve_full(unsigned set, const std::array<double, 3>& str, double kcn,
+                  double ktn, double kcd_old, double ktd_old, double dt,
+                  std::array<double, 9>& x, std::array<double, 9>& dsig_dtr,
+                  int& iterations) const;
   template <class T, int M>
-  void residual(const std::array<T, 5 + M>& x, const int* ids,
-                const std::array<double, 3>& str, double kcn, double ktn,
-                double dt, bool lc, bool lt, bool rates,
-                std::array<T, 5 + M>& r) const;
+  void residual_full(const std::array<T, 5 + M>& x, const int* ids,
+                     const std::array<double, 3>& str, double kcn, double ktn,
+                     double dt, bool lc, bool lt, bool rates,
+                     std::array<T, 5 + M>& r) const;
+  /// Reduced residual of one active set: unknowns y = (multipliers,
+  /// kappa_c or its log-rate, kappa_t or its log-rate); the principal
+  /// stresses are eliminated in closed form (isotropic elasticity, HTC flow
+  /// a(q) s + b 1 + c e_k); sig receives them.
+  template <class T, int M>
+  void reduced(const T* y, const int* ids, const T* str, double kcn, double ktn,
+               double dt, bool lc, bool lt, bool rates, T* r, T* sig) const;
   template <class T>
   T hc(const T& kc) const;
+  /// First active set to try, from the trial state (frozen surfaces).
+  unsigned predict_set(const std::array<double, 3>& str, double kc, double kt,
+                       const std::array<double, 5>& phi,
+                       const std::array<std::array<double, 3>, 5>& n) const;
 
   ConcreteParameters p_;
   DerivedProperties d_{};
