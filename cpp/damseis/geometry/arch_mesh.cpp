@@ -1,6 +1,7 @@
 // 3D arch dam + canyon + foundation: gmsh/OCC construction, meshing, joint
 // splitting and distribution.
 #include "arch_mesh.h"
+#include "model_arrays.h"
 #include "tags.h"
 
 #include <algorithm>
@@ -546,21 +547,6 @@ void check_root_status(MPI_Comm comm, bool ok, bool invalid,
   throw std::runtime_error(msg);
 }
 
-std::shared_ptr<dolfinx::mesh::MeshTags<std::int32_t>>
-make_tags(const std::shared_ptr<dolfinx::mesh::Mesh>& mesh, int dim,
-          const std::vector<std::int64_t>& entities,
-          const std::vector<std::int32_t>& values)
-{
-  auto [local_entities, local_values] =
-      dolfinx::io::xdmf_utils::distribute_entity_data(
-          *mesh, dim, std::span<const std::int64_t>(entities),
-          std::span<const std::int32_t>(values));
-  auto adj = dolfinx::graph::regular_adjacency_list(std::move(local_entities),
-                                                    dim + 1);
-  return std::make_shared<dolfinx::mesh::MeshTags<std::int32_t>>(
-      dolfinx::mesh::create_meshtags<std::int32_t>(
-          mesh, dim, adj, std::span<const std::int32_t>(local_values)));
-}
 } // namespace
 
 //-----------------------------------------------------------------------------
@@ -601,22 +587,9 @@ ArchModel build_arch_dam(MPI_Comm comm, const ArchDamDefinition& def,
   check_root_status(comm, ok, invalid, message);
 
   const std::size_t num_nodes = d.x.size() / 3;
-  auto mesh = std::make_shared<dolfinx::mesh::Mesh>(dolfinx::mesh::create_mesh(
-      comm, dolfinx::graph::regular_adjacency_list(d.cells, 4),
-      dolfinx::fem::CoordinateElement(dolfinx::mesh::CellType::tetrahedron, 1),
-      std::span<const double>(d.x), {num_nodes, 3},
-      dolfinx::mesh::GhostMode::shared_facet));
-  dolfinx::mesh::Topology& topology = mesh->topology_mutable();
-  topology.create_connectivity(3, 0);
-  topology.create_connectivity(2, 0);
-  topology.create_connectivity(2, 3);
-
   ArchModel out;
-  out.model.mesh = mesh;
-  out.model.cell_tags = make_tags(mesh, 3, d.cells, d.cell_values);
-  out.model.cell_tags->name = "cell_tags";
-  out.model.facet_tags = make_tags(mesh, 2, d.facets, d.facet_values);
-  out.model.facet_tags->name = "facet_tags";
+  out.model = model_from_arrays(comm, d.x, d.cells, d.cell_values, d.facets,
+                                d.facet_values);
   broadcast_joint_pairs(comm, d.joints);
   out.joints = std::move(d.joints);
 
