@@ -1,5 +1,6 @@
 #include "linear_seismic.h"
 #include "checkpoint.h"
+#include "run_support.h"
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -29,140 +30,9 @@ using dolfinx::la::petsc::Vector;
 using nlohmann::json;
 using Clock = std::chrono::steady_clock;
 
-volatile std::sig_atomic_t stop_requested = 0;
-extern "C" void request_stop(int)
-{
-  stop_requested = 1;
-}
-
 double seconds_since(Clock::time_point t0)
 {
   return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-/// A new vector with the layout of the columns (or rows) of A.
-Vector column_vector(Mat A)
-{
-  Vec x;
-  MatCreateVecs(A, &x, nullptr);
-  VecSet(x, 0.0);
-  return Vector(x, false);
-}
-
-Vector row_vector(Mat A)
-{
-  Vec x;
-  MatCreateVecs(A, nullptr, &x);
-  VecSet(x, 0.0);
-  return Vector(x, false);
-}
-
-/// Copies `x` (owned values) into the Function `u` and updates its ghosts.
-void to_function(Vec x, dolfinx::fem::Function<double>& u)
-{
-  const double* a = nullptr;
-  VecGetArrayRead(x, &a);
-  std::span<double> y = u.x()->mutable_array();
-  const auto& map = *u.function_space()->dofmap()->index_map;
-  const int bs = u.function_space()->dofmap()->index_map_bs();
-  std::copy_n(a, map.size_local() * bs, y.begin());
-  VecRestoreArrayRead(x, &a);
-  u.x()->scatter_fwd();
-}
-
-std::vector<double> owned_values(Vec x)
-{
-  PetscInt n = 0;
-  VecGetLocalSize(x, &n);
-  const double* a = nullptr;
-  VecGetArrayRead(x, &a);
-  std::vector<double> v(a, a + n);
-  VecRestoreArrayRead(x, &a);
-  return v;
-}
-
-void set_owned_values(Vec x, const std::vector<double>& v)
-{
-  double* a = nullptr;
-  VecGetArray(x, &a);
-  std::copy(v.begin(), v.end(), a);
-  VecRestoreArray(x, &a);
-}
-
-json extreme_json(const results::Extreme& e, int dim)
-{
-  json j = {{"value", e.value * 1e-6}, {"x", e.x[0]}, {"y", e.x[1]}};
-  if (dim == 3)
-    j["z"] = e.x[2];
-  j["t"] = e.t;
-  return j;
-}
-
-std::vector<std::int32_t> region_cells(const geometry::Model& m, int region)
-{
-  std::vector<std::int32_t> cells;
-  const auto& tags = *m.cell_tags;
-  for (std::size_t i = 0; i < tags.indices().size(); ++i)
-  {
-    if (tags.values()[i] == region)
-      cells.push_back(tags.indices()[i]);
-  }
-  return cells;
-}
-
-void write_modes(fem::ElasticModel& fe, const fem::Modes& modes,
-                 const std::function<Vec(Vec)>& full,
-                 const std::filesystem::path& file)
-{
-  dolfinx::fem::Function<double> u(fe.V()), u1(fe.output_space("u_vertex"));
-  u1.name = "mode_shape";
-  dolfinx::io::XDMFFile xdmf(fe.mesh()->comm(), file, "w");
-  xdmf.write_mesh(*fe.mesh());
-  for (std::size_t i = 0; i < modes.shapes.size(); ++i)
-  {
-    to_function(full(modes.shapes[i]), u);
-    u1.interpolate(u);
-    xdmf.write_function(u1, static_cast<double>(i + 1));
-  }
-  xdmf.close();
-}
-
-/// Writes the envelope values of the given owned points of every rank into
-/// a CSV file on rank 0.
-void write_face_csv(MPI_Comm comm, const results::StressEnvelope& env,
-                    std::span<const std::int32_t> points,
-                    const std::filesystem::path& file)
-{
-  std::vector<double> local;
-  for (std::int32_t p : points)
-  {
-    const auto& x = env.point(p);
-    local.insert(local.end(),
-                 {x[0], x[1], x[2], env.max_principal()[p] * 1e-6,
-                  env.max_times()[p], env.min_principal()[p] * 1e-6,
-                  env.min_times()[p]});
-  }
-  int rank = 0, size = 1;
-  MPI_Comm_rank(comm, &rank);
-  MPI_Comm_size(comm, &size);
-  int n = static_cast<int>(local.size());
-  std::vector<int> counts(size), offsets(size + 1, 0);
-  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
-  for (int r = 0; r < size; ++r)
-    offsets[r + 1] = offsets[r] + counts[r];
-  std::vector<double> all(rank == 0 ? offsets[size] : 0);
-  MPI_Gatherv(local.data(), n, MPI_DOUBLE, all.data(), counts.data(),
-              offsets.data(), MPI_DOUBLE, 0, comm);
-  if (rank != 0)
-    return;
-  std::ofstream csv(file);
-  csv << "x_m,y_m,z_m,max_principal_mpa,t_max_s,min_principal_mpa,t_min_s\n";
-  csv.precision(8);
-  for (std::size_t i = 0; i < all.size(); i += 7)
-  {
-    for (int k = 0; k < 7; ++k)
-      csv << all[i + k] << (k < 6 ? "," : "\n");
-  }
 }
 } // namespace
 
@@ -243,13 +113,11 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
 
   const double static_seconds = seconds_since(wall_start);
 
-  // Modal analysis, with and without the added mass.
-  const auto modal_start = Clock::now();
-  fem::Modes modes = fem::solve_modes(K.mat(), M.mat(), s.modes);
-  std::vector<double> dry_hz = modes.frequencies_hz;
+  // Modal analysis, with and without the added mass; Rayleigh damping.
+  Matrix M0(nullptr, false);
   if (added)
   {
-    Matrix M0(fe.assemble_mass(nullptr), false);
+    M0 = Matrix(fe.assemble_mass(nullptr), false);
     if (tie)
     {
       Mat aij, reduced;
@@ -258,28 +126,17 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
       MatDestroy(&aij);
       M0 = Matrix(reduced, false);
     }
-    dry_hz = fem::solve_modes(K.mat(), M0.mat(), s.modes).frequencies_hz;
   }
-  const double modal_seconds = seconds_since(modal_start);
+  const ModalResult modal =
+      modal_and_damping(K.mat(), M.mat(), added ? M0.mat() : nullptr, s);
+  const fem::Modes& modes = modal.modes;
+  const double modal_seconds = modal.seconds;
+  const double f1 = modal.f1, f2 = modal.f2;
+  const auto damping = modal.damping;
   std::ostringstream freqs;
   for (double f : modes.frequencies_hz)
     freqs << " " << std::round(f * 1000) / 1000;
   results::print(comm, "natural frequencies [Hz]:" + freqs.str());
-
-  // Rayleigh damping.
-  double f1, f2;
-  if (s.damping_frequencies_hz.size() == 2)
-  {
-    f1 = s.damping_frequencies_hz[0];
-    f2 = s.damping_frequencies_hz[1];
-  }
-  else
-  {
-    f1 = modes.frequencies_hz[s.damping_modes[0] - 1];
-    f2 = modes.frequencies_hz[s.damping_modes[1] - 1];
-  }
-  const auto damping =
-      dynamics::RayleighDamping::from_ratio(s.damping_ratio, f1, f2);
 
   // Dynamic stage: displacement relative to the base under the ground
   // acceleration, M a + C v + K u = -M sum_c r_c a_gc(t). The added mass
@@ -436,9 +293,7 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
                            newmark.solver().name());
   if (k0 == 0)
     record_state(0, 0.0, newmark.u());
-  stop_requested = 0;
-  auto old_int = std::signal(SIGINT, request_stop);
-  auto old_term = std::signal(SIGTERM, request_stop);
+  StopSignals signals;
   results::Progress progress(comm, n - k0);
   const auto loop_start = Clock::now();
   for (int k = k0 + 1; k <= n; ++k)
@@ -447,8 +302,7 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     newmark.step(f.vec());
     record_state(k, k * dt, newmark.u());
     progress.report(k - k0, k * dt);
-    int stop = stop_requested || k == s.stop_at_step, any_stop = 0;
-    MPI_Allreduce(&stop, &any_stop, 1, MPI_INT, MPI_MAX, comm);
+    const bool any_stop = signals.requested(comm, k == s.stop_at_step);
     if (any_stop ||
         (s.checkpoint_every > 0 && k % s.checkpoint_every == 0 && k < n))
     {
@@ -456,94 +310,28 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     }
     if (any_stop)
     {
-      std::signal(SIGINT, old_int);
-      std::signal(SIGTERM, old_term);
       throw Interrupted("stopped at step " + std::to_string(k) +
                         "; checkpoint written to " + ckpt_dir.string() +
                         "; resume with --set run.restart=true");
     }
   }
-  std::signal(SIGINT, old_int);
-  std::signal(SIGTERM, old_term);
   const double loop_seconds = seconds_since(loop_start);
   results::reduce_history(comm, hist);
 
   // Crest history relative to the base point.
-  const char* axis = "xyz";
-  std::array<double, 3> peak = {0, 0, 0}, peak_t = {0, 0, 0};
-  double peak_h = 0.0, peak_h_t = 0.0;
-  {
-    std::ofstream csv;
-    if (rank == 0)
-    {
-      csv.open(out_dir / "crest.csv");
-      csv << "t_s";
-      for (int i = 0; i < dim; ++i)
-        csv << ",u" << axis[i] << "_m";
-      for (int i = 0; i < dim; ++i)
-        csv << ",u" << axis[i] << "_total_m";
-      csv << "\n";
-      csv.precision(10);
-    }
-    for (int k = 0; k <= n; ++k)
-    {
-      std::array<double, 3> u = {0, 0, 0};
-      double horizontal = 0.0;
-      for (int i = 0; i < dim; ++i)
-      {
-        u[i] = hist[2 * dim * k + i] - hist[2 * dim * k + dim + i];
-        if (std::abs(u[i]) > std::abs(peak[i]))
-        {
-          peak[i] = u[i];
-          peak_t[i] = k * dt;
-        }
-        if (i < dim - 1)
-          horizontal += u[i] * u[i];
-      }
-      horizontal = std::sqrt(horizontal);
-      if (dim == 2)
-        horizontal = u[0];
-      if (std::abs(horizontal) > std::abs(peak_h))
-      {
-        peak_h = horizontal;
-        peak_h_t = k * dt;
-      }
-      if (rank == 0)
-      {
-        csv << k * dt;
-        for (int i = 0; i < dim; ++i)
-          csv << "," << u[i];
-        for (int i = 0; i < dim; ++i)
-          csv << "," << u[i] + crest_static[i] - base_static[i];
-        csv << "\n";
-      }
-    }
-  }
+  const json crest_summary =
+      write_crest_history(comm, hist, dim, n, dt, crest_static, base_static,
+                          false, out_dir / "crest.csv");
 
   results::write_envelopes(fe, envelope, out_dir / "envelopes.xdmf");
-  json faces = json::object();
-  for (std::size_t i = 0; i < s.faces.size(); ++i)
-  {
-    const std::string& name = s.faces[i].first;
-    write_face_csv(comm, envelope, face_pts[i],
-                   out_dir / ("face_" + name + ".csv"));
-    faces[name] = {
-        {"max_principal_tension_mpa",
-         extreme_json(envelope.max_tension(comm, face_pts[i]), dim)},
-        {"max_principal_compression_mpa",
-         extreme_json(envelope.max_compression(comm, face_pts[i]), dim)}};
-  }
+  const json faces = write_faces(comm, s, envelope, face_pts, dim, out_dir);
   const auto tension = envelope.max_tension(comm);
   const auto compression = envelope.max_compression(comm);
 
-  json by_component = json::object();
-  json statics = json::array();
+  const char* axis = "xyz";
   json motion = json::object();
   for (int i = 0; i < dim; ++i)
   {
-    by_component[std::string(1, axis[i])] = {{"value", peak[i]},
-                                             {"t", peak_t[i]}};
-    statics.push_back(crest_static[i] - base_static[i]);
     motion[std::string(1, axis[i])] = {
         {"record", s.motion[i].record},
         {"peak_g", s.motion[i].active ? s.motion[i].peak_g : 0.0}};
@@ -555,7 +343,7 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
       {"steps", n},
       {"dt_s", dt},
       {"frequencies_hz", modes.frequencies_hz},
-      {"frequencies_dry_hz", dry_hz},
+      {"frequencies_dry_hz", modal.dry_hz},
       {"added_mass", added != nullptr},
       {"damping",
        {{"ratio", s.damping_ratio},
@@ -566,9 +354,6 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
       {"stress", s.stress_total ? "total" : "seismic"},
       {"crest_point",
        std::vector<double>(crest.node().begin(), crest.node().begin() + dim)},
-      {"crest_static_m", statics},
-      {"crest_displacement_max_m", {{"value", peak_h}, {"t", peak_h_t}}},
-      {"crest_displacement_max_by_component_m", by_component},
       {"max_principal_tension_mpa", extreme_json(tension, dim)},
       {"max_principal_compression_mpa", extreme_json(compression, dim)},
       {"faces", faces},
@@ -582,12 +367,17 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
       {"restarted_from_step", k0},
       {"mpi_ranks", ranks},
   };
+  summary.update(crest_summary);
   summary["wall_seconds"] = seconds_since(wall_start);
-  results::print(comm, "max tension " + std::to_string(tension.value * 1e-6) +
-                           " MPa, max compression " +
-                           std::to_string(compression.value * 1e-6) +
-                           " MPa, max crest displacement " +
-                           std::to_string(peak_h * 100) + " cm");
+  results::print(
+      comm,
+      "max tension " + std::to_string(tension.value * 1e-6) +
+          " MPa, max compression " + std::to_string(compression.value * 1e-6) +
+          " MPa, max crest displacement " +
+          std::to_string(
+              crest_summary["crest_displacement_max_m"]["value"].get<double>() *
+              100) +
+          " cm");
   return summary;
 }
 } // namespace damseis::analysis

@@ -1,0 +1,281 @@
+#include "run_support.h"
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <dolfinx/io/XDMFFile.h>
+#include <dolfinx/mesh/MeshTags.h>
+#include <fstream>
+#include <sstream>
+
+namespace damseis::analysis
+{
+using dolfinx::la::petsc::Vector;
+using nlohmann::json;
+
+Vector column_vector(Mat A)
+{
+  Vec x;
+  MatCreateVecs(A, &x, nullptr);
+  VecSet(x, 0.0);
+  return Vector(x, false);
+}
+
+Vector row_vector(Mat A)
+{
+  Vec x;
+  MatCreateVecs(A, nullptr, &x);
+  VecSet(x, 0.0);
+  return Vector(x, false);
+}
+
+void to_function(Vec x, dolfinx::fem::Function<double>& u)
+{
+  const double* a = nullptr;
+  VecGetArrayRead(x, &a);
+  std::span<double> y = u.x()->mutable_array();
+  const auto& map = *u.function_space()->dofmap()->index_map;
+  const int bs = u.function_space()->dofmap()->index_map_bs();
+  std::copy_n(a, map.size_local() * bs, y.begin());
+  VecRestoreArrayRead(x, &a);
+  u.x()->scatter_fwd();
+}
+
+std::vector<double> owned_values(Vec x)
+{
+  PetscInt n = 0;
+  VecGetLocalSize(x, &n);
+  const double* a = nullptr;
+  VecGetArrayRead(x, &a);
+  std::vector<double> v(a, a + n);
+  VecRestoreArrayRead(x, &a);
+  return v;
+}
+
+void set_owned_values(Vec x, const std::vector<double>& v)
+{
+  double* a = nullptr;
+  VecGetArray(x, &a);
+  std::copy(v.begin(), v.end(), a);
+  VecRestoreArray(x, &a);
+}
+
+json extreme_json(const results::Extreme& e, int dim)
+{
+  json j = {{"value", e.value * 1e-6}, {"x", e.x[0]}, {"y", e.x[1]}};
+  if (dim == 3)
+    j["z"] = e.x[2];
+  j["t"] = e.t;
+  return j;
+}
+
+std::vector<std::int32_t> region_cells(const geometry::Model& m, int region)
+{
+  std::vector<std::int32_t> cells;
+  const auto& tags = *m.cell_tags;
+  for (std::size_t i = 0; i < tags.indices().size(); ++i)
+  {
+    if (tags.values()[i] == region)
+      cells.push_back(tags.indices()[i]);
+  }
+  return cells;
+}
+
+namespace
+{
+volatile std::sig_atomic_t stop_requested = 0;
+extern "C" void request_stop(int)
+{
+  stop_requested = 1;
+}
+} // namespace
+
+StopSignals::StopSignals()
+{
+  stop_requested = 0;
+  _old_int = std::signal(SIGINT, request_stop);
+  _old_term = std::signal(SIGTERM, request_stop);
+}
+
+StopSignals::~StopSignals()
+{
+  std::signal(SIGINT, _old_int);
+  std::signal(SIGTERM, _old_term);
+}
+
+bool StopSignals::requested(MPI_Comm comm, bool forced) const
+{
+  int stop = stop_requested || forced, any = 0;
+  MPI_Allreduce(&stop, &any, 1, MPI_INT, MPI_MAX, comm);
+  return any != 0;
+}
+
+ModalResult modal_and_damping(Mat K, Mat M, Mat M_dry, const SeismicSettings& s)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  ModalResult r;
+  r.modes = fem::solve_modes(K, M, s.modes);
+  r.dry_hz = M_dry ? fem::solve_modes(K, M_dry, s.modes).frequencies_hz
+                   : r.modes.frequencies_hz;
+  r.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
+          .count();
+  if (s.damping_frequencies_hz.size() == 2)
+  {
+    r.f1 = s.damping_frequencies_hz[0];
+    r.f2 = s.damping_frequencies_hz[1];
+  }
+  else
+  {
+    r.f1 = r.modes.frequencies_hz[s.damping_modes[0] - 1];
+    r.f2 = r.modes.frequencies_hz[s.damping_modes[1] - 1];
+  }
+  r.damping =
+      dynamics::RayleighDamping::from_ratio(s.damping_ratio, r.f1, r.f2);
+  return r;
+}
+
+void write_modes(fem::ElasticModel& fe, const fem::Modes& modes,
+                 const std::function<Vec(Vec)>& full,
+                 const std::filesystem::path& file)
+{
+  dolfinx::fem::Function<double> u(fe.V()), u1(fe.output_space("u_vertex"));
+  u1.name = "mode_shape";
+  dolfinx::io::XDMFFile xdmf(fe.mesh()->comm(), file, "w");
+  xdmf.write_mesh(*fe.mesh());
+  for (std::size_t i = 0; i < modes.shapes.size(); ++i)
+  {
+    to_function(full(modes.shapes[i]), u);
+    u1.interpolate(u);
+    xdmf.write_function(u1, static_cast<double>(i + 1));
+  }
+  xdmf.close();
+}
+
+void write_face_csv(MPI_Comm comm, const results::StressEnvelope& env,
+                    std::span<const std::int32_t> points,
+                    const std::filesystem::path& file)
+{
+  std::vector<double> local;
+  for (std::int32_t p : points)
+  {
+    const auto& x = env.point(p);
+    local.insert(local.end(),
+                 {x[0], x[1], x[2], env.max_principal()[p] * 1e-6,
+                  env.max_times()[p], env.min_principal()[p] * 1e-6,
+                  env.min_times()[p]});
+  }
+  int rank = 0, size = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &size);
+  int n = static_cast<int>(local.size());
+  std::vector<int> counts(size), offsets(size + 1, 0);
+  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
+  for (int r = 0; r < size; ++r)
+    offsets[r + 1] = offsets[r] + counts[r];
+  std::vector<double> all(rank == 0 ? offsets[size] : 0);
+  MPI_Gatherv(local.data(), n, MPI_DOUBLE, all.data(), counts.data(),
+              offsets.data(), MPI_DOUBLE, 0, comm);
+  if (rank != 0)
+    return;
+  std::ofstream csv(file);
+  csv << "x_m,y_m,z_m,max_principal_mpa,t_max_s,min_principal_mpa,t_min_s\n";
+  csv.precision(8);
+  for (std::size_t i = 0; i < all.size(); i += 7)
+  {
+    for (int k = 0; k < 7; ++k)
+      csv << all[i + k] << (k < 6 ? "," : "\n");
+  }
+}
+
+json write_crest_history(MPI_Comm comm, const std::vector<double>& hist,
+                         int dim, int steps, double dt,
+                         const std::array<double, 3>& crest_static,
+                         const std::array<double, 3>& base_static,
+                         bool history_is_total,
+                         const std::filesystem::path& file)
+{
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  const char* axis = "xyz";
+  std::array<double, 3> peak = {0, 0, 0}, peak_t = {0, 0, 0};
+  double peak_h = 0.0, peak_h_t = 0.0;
+  std::ofstream csv;
+  if (rank == 0)
+  {
+    csv.open(file);
+    csv << "t_s";
+    for (int i = 0; i < dim; ++i)
+      csv << ",u" << axis[i] << "_m";
+    for (int i = 0; i < dim; ++i)
+      csv << ",u" << axis[i] << "_total_m";
+    csv << "\n";
+    csv.precision(10);
+  }
+  std::array<double, 3> rel_static = {0, 0, 0};
+  for (int i = 0; i < dim; ++i)
+    rel_static[i] = crest_static[i] - base_static[i];
+  for (int k = 0; k <= steps; ++k)
+  {
+    std::array<double, 3> u = {0, 0, 0};
+    double horizontal = 0.0;
+    for (int i = 0; i < dim; ++i)
+    {
+      u[i] = hist[2 * dim * k + i] - hist[2 * dim * k + dim + i];
+      if (history_is_total)
+        u[i] -= rel_static[i];
+      if (std::abs(u[i]) > std::abs(peak[i]))
+      {
+        peak[i] = u[i];
+        peak_t[i] = k * dt;
+      }
+      if (i < dim - 1)
+        horizontal += u[i] * u[i];
+    }
+    horizontal = std::sqrt(horizontal);
+    if (dim == 2)
+      horizontal = u[0];
+    if (std::abs(horizontal) > std::abs(peak_h))
+    {
+      peak_h = horizontal;
+      peak_h_t = k * dt;
+    }
+    if (rank == 0)
+    {
+      csv << k * dt;
+      for (int i = 0; i < dim; ++i)
+        csv << "," << u[i];
+      for (int i = 0; i < dim; ++i)
+        csv << "," << u[i] + rel_static[i];
+      csv << "\n";
+    }
+  }
+  json by_component = json::object(), statics = json::array();
+  for (int i = 0; i < dim; ++i)
+  {
+    by_component[std::string(1, axis[i])] = {{"value", peak[i]},
+                                             {"t", peak_t[i]}};
+    statics.push_back(rel_static[i]);
+  }
+  return {{"crest_static_m", statics},
+          {"crest_displacement_max_m", {{"value", peak_h}, {"t", peak_h_t}}},
+          {"crest_displacement_max_by_component_m", by_component}};
+}
+
+json write_faces(MPI_Comm comm, const SeismicSettings& s,
+                 const results::StressEnvelope& env,
+                 const std::vector<std::vector<std::int32_t>>& pts, int dim,
+                 const std::filesystem::path& out_dir)
+{
+  json faces = json::object();
+  for (std::size_t i = 0; i < s.faces.size(); ++i)
+  {
+    const std::string& name = s.faces[i].first;
+    write_face_csv(comm, env, pts[i], out_dir / ("face_" + name + ".csv"));
+    faces[name] = {{"max_principal_tension_mpa",
+                    extreme_json(env.max_tension(comm, pts[i]), dim)},
+                   {"max_principal_compression_mpa",
+                    extreme_json(env.max_compression(comm, pts[i]), dim)}};
+  }
+  return faces;
+}
+} // namespace damseis::analysis
