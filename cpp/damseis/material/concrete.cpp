@@ -88,8 +88,11 @@ void lu_solve(const std::array<double, N * N>& a, const std::array<int, N>& piv,
 }
 
 /// Valid active sets: edge needs the HTC surface; R2 needs R1, R3 needs R2;
-/// {HTC, edge, R1, R2} is excluded (its constraints are dependent:
-/// sigma1 = sigma2 follows from either pair).
+/// {HTC, edge, R1, R2, R3} is excluded. In {HTC, edge, R1, R2} the
+/// constraints are dependent (sigma1 = sigma2 follows from either pair): the
+/// two HTC branches there share their multiplier equally (the centroid of
+/// the subdifferential, as at the apex) and the Rankine planes carry the
+/// difference between the two directions.
 bool valid_set(unsigned s)
 {
   if (s == htc_apex)
@@ -102,7 +105,7 @@ bool valid_set(unsigned s)
     return false;
   if ((s & rankine_3) && !(s & rankine_2))
     return false;
-  if ((s & htc_edge) && (s & rankine_2))
+  if ((s & htc_edge) && (s & rankine_3))
     return false;
   return true;
 }
@@ -345,9 +348,7 @@ void HtcConcrete::reduced(const T* y, const int* ids, const T* str, double kcn,
                           T* r, T* sig) const
 {
   using std::exp;
-  using std::log;
   using std::sqrt;
-  const double nan = std::numeric_limits<double>::quiet_NaN();
   // Internal variables: kappa itself, or (power rate law) the log-rate
   // y = log(1 + kappa_dot / kdot0), which makes the consistency equation
   // nearly linear in the unknown (R = exp(delta y)).
@@ -454,11 +455,20 @@ void HtcConcrete::reduced(const T* y, const int* ids, const T* str, double kcn,
   // Yield functions of the active set, scaled by 1/fc0.
   const T I1 = 3.0 * p, J2 = q * q;
   const T common = X[0] * J2 * ifc * ifc + X[1] * q * ifc + X[3] * I1 * ifc;
+  // {HTC, edge, R1, R2}: the edge branch equation is implied by the others
+  // (sigma1 = sigma2 = ft); its row sets the two HTC multipliers equal.
+  bool split = false;
+  for (int j = 0; j < M; ++j)
+    split = split || ids[j] == 3;
   for (int j = 0; j < M; ++j)
   {
     const int k = ids[j];
-    r[j] = k < 2 || k == 5 ? T(common + X[2] * sig[k == 5 ? 0 : k] * ifc - 1.0)
-                           : T((sig[k - 2] - ft) / f0);
+    if (k == 1 && split)
+      r[j] = (lh0 - lh1) * (d_.E / f0);
+    else
+      r[j] = k < 2 || k == 5
+                 ? T(common + X[2] * sig[k == 5 ? 0 : k] * ifc - 1.0)
+                 : T((sig[k - 2] - ft) / f0);
   }
   // Flow of the HTC branches and of the Rankine planes.
   std::array<T, 3> eh;
@@ -489,7 +499,7 @@ void HtcConcrete::reduced(const T* y, const int* ids, const T* str, double kcn,
       }
       nh = sh;
     }
-    else if (rates && value(lam) < 0.0)
+    else if (value(lam) < 0.0)
       nh = -nh; // signed: no spurious roots with negative multipliers
   }
   if (any_r)
@@ -497,7 +507,7 @@ void HtcConcrete::reduced(const T* y, const int* ids, const T* str, double kcn,
     nr = sqrt(er[0] * er[0] + er[1] * er[1] + er[2] * er[2]);
     if (value(nr) == 0.0)
       nr = er[0] + er[1] + er[2];
-    else if (rates && value(er[0] + er[1] + er[2]) < 0.0)
+    else if (value(er[0] + er[1] + er[2]) < 0.0)
       nr = -nr;
   }
   // Lee & Fenves stress weight (|x| smoothed with 1e-6 fc0).
@@ -513,19 +523,25 @@ void HtcConcrete::reduced(const T* y, const int* ids, const T* str, double kcn,
   const T dkc = (1.0 - w) * c23 * nh;
   const T dkt = w * c23 * nh + c23 * nr;
   const double sK = d_.E / f0;
+  // Rate equations of the log-rate unknowns, y = log(1 + dk / (dt kdot0)),
+  // in the form delta (1 - (1 + dk / (dt kdot0)) e^-y): scaled by the
+  // exponent (near the root, the relative error of R, like the other rows),
+  // defined for any sign of dk, and linear in the multipliers wherever dk is
+  // (Rankine flow), so that Newton on (multipliers, y) takes the steps of
+  // Newton on the consistency condition in y alone (concave: no overshoot
+  // from the right). The log form y - log(...) made the step leave the
+  // domain of the logarithm and crawl.
   if (lc)
   {
     const T arg = 1.0 + dkc / (dt * d_.rate_c.kdot0);
-    // scaled by the exponent: the relative error of R, like the others
-    r[M] = value(arg) > 0.0 ? T((y[M] - log(arg)) * d_.rate_c.delta) : T(nan);
+    r[M] = T(d_.rate_c.delta * (1.0 - arg * exp(-y[M])));
   }
   else
     r[M] = (kc - kcn - dkc) * sK;
   if (lt)
   {
     const T arg = 1.0 + dkt / (dt * d_.rate_t.kdot0);
-    r[M + 1] =
-        value(arg) > 0.0 ? T((y[M + 1] - log(arg)) * d_.rate_t.delta) : T(nan);
+    r[M + 1] = T(d_.rate_t.delta * (1.0 - arg * exp(-y[M + 1])));
   }
   else
     r[M + 1] = (kt - ktn - dkt) * sK;
@@ -784,12 +800,11 @@ bool HtcConcrete::solve_full(unsigned set, const std::array<double, 3>& str,
 }
 
 template <int M>
-bool HtcConcrete::solve_set(unsigned set, const std::array<double, 3>& str,
-                            double kcn, double ktn, double kcd_old,
-                            double ktd_old, double dt, bool patient,
-                            std::array<double, 9>& xout,
-                            std::array<double, 9>& dsig_dtr,
-                            int& iterations) const
+bool HtcConcrete::solve_set(
+    unsigned set, const std::array<double, 3>& str, double kcn, double ktn,
+    double kcd_old, double ktd_old, double dt, bool patient, unsigned warm_set,
+    const std::array<double, 9>& warm, std::array<double, 9>& xout,
+    std::array<double, 9>& dsig_dtr, int& iterations) const
 {
   constexpr int N = M + 2;
   using D = Dual<N>;
@@ -862,6 +877,18 @@ bool HtcConcrete::solve_set(unsigned set, const std::array<double, 3>& str,
         if (std::abs(dy[i]) > lim)
           alpha = std::min(alpha, lim / std::abs(dy[i]));
       }
+      auto wnorm = [&](const std::array<double, N>& d)
+      {
+        double v = 0;
+        for (int i = 0; i < N; ++i)
+        {
+          const double w = i == M && lc       ? d_.rate_c.delta
+                           : i == M + 1 && lt ? d_.rate_t.delta
+                                              : d_.E / d_.fc0;
+          v += (w * d[i]) * (w * d[i]);
+        }
+        return std::sqrt(v);
+      };
       bool ok = false;
       for (int ls = 0; ls < 40; ++ls)
       {
@@ -875,6 +902,22 @@ bool HtcConcrete::solve_set(unsigned set, const std::array<double, 3>& str,
         {
           ok = true;
           break;
+        }
+        if (std::isfinite(mt))
+        {
+          // Natural monotonicity test (Deuflhard): the simplified Newton
+          // correction -J^-1 r(y + alpha dy) with the current Jacobian must
+          // shrink (affine invariant: unaffected by how nonlinear the
+          // residual rows are in the multipliers).
+          std::array<double, N> db;
+          for (int i = 0; i < N; ++i)
+            db[i] = -rt[i];
+          lu_solve<N>(J, piv, db);
+          if (wnorm(db) <= (1.0 - 0.25 * alpha) * wnorm(dy))
+          {
+            ok = true;
+            break;
+          }
         }
         // Quadratic model of the merit along the step (slope -2 m0).
         const double an = m0 * alpha * alpha / (mt - m0 + 2.0 * m0 * alpha);
@@ -934,6 +977,32 @@ bool HtcConcrete::solve_set(unsigned set, const std::array<double, 3>& str,
       }
     }
     ok = done;
+  }
+  if (!ok && warm_set)
+  {
+    // Warm start from the solution of a neighbouring active set (the
+    // drop/add loop changes one surface at a time): multipliers of the
+    // common surfaces and its internal variables.
+    std::array<double, N> yw{};
+    int jw = 0;
+    for (int k = 0; k < 6; ++k)
+      if (warm_set & (1u << k))
+      {
+        for (int j = 0; j < M; ++j)
+          if (ids[j] == k)
+            yw[j] = std::max(warm[5 + jw], 0.0);
+        ++jw;
+      }
+    lc = rates && log_c_;
+    lt = rates && log_t_;
+    yw[M] =
+        lc ? std::log1p(std::max(warm[3] - kcn, 0.0) / (dt * d_.rate_c.kdot0))
+           : warm[3];
+    yw[M + 1] =
+        lt ? std::log1p(std::max(warm[4] - ktn, 0.0) / (dt * d_.rate_t.kdot0))
+           : warm[4];
+    y = yw;
+    ok = newton(lc, lt, rates, y);
   }
   if (!ok)
     return false;
@@ -1167,6 +1236,8 @@ Update HtcConcrete::integrate_step(const State& old, const Vector6& de,
   std::array<double, 9> x{}, C{};
   const double tol_viol = 1e-8 * d_.fc0, tol_lam = -1e-13;
   std::uint64_t visited = 0; // bit s: set s already tried
+  unsigned warm_set = 0;     // last set solved, and its solution
+  std::array<double, 9> warm{};
   auto tried = [&](unsigned s) { return (visited >> s) & 1u; };
 
   // Solves one set and checks the Kuhn-Tucker conditions; returns 0 if
@@ -1183,22 +1254,24 @@ Update HtcConcrete::integrate_step(const State& old, const Vector6& de,
     switch (m)
     {
     case 1:
-      ok = solve_set<1>(s, str, kc, kt, kcd, ktd, dt, patient, x, C,
-                        u.iterations);
+      ok = solve_set<1>(s, str, kc, kt, kcd, ktd, dt, patient, warm_set, warm,
+                        x, C, u.iterations);
       break;
     case 2:
-      ok = solve_set<2>(s, str, kc, kt, kcd, ktd, dt, patient, x, C,
-                        u.iterations);
+      ok = solve_set<2>(s, str, kc, kt, kcd, ktd, dt, patient, warm_set, warm,
+                        x, C, u.iterations);
       break;
     case 3:
-      ok = solve_set<3>(s, str, kc, kt, kcd, ktd, dt, patient, x, C,
-                        u.iterations);
+      ok = solve_set<3>(s, str, kc, kt, kcd, ktd, dt, patient, warm_set, warm,
+                        x, C, u.iterations);
       break;
     default:
-      ok = solve_set<4>(s, str, kc, kt, kcd, ktd, dt, patient, x, C,
-                        u.iterations);
+      ok = solve_set<4>(s, str, kc, kt, kcd, ktd, dt, patient, warm_set, warm,
+                        x, C, u.iterations);
     }
-    if (!ok && s != htc_apex)
+    const bool dependent =
+        s == (htc_surface | htc_edge | rankine_1 | rankine_2);
+    if (!ok && s != htc_apex && !dependent)
     {
       // Second line: the full (stresses, kappas, multipliers) system from
       // the old rates, then from zero rates.
@@ -1225,6 +1298,8 @@ Update HtcConcrete::integrate_step(const State& old, const Vector6& de,
     }
     if (!ok)
       return 0xffu;
+    warm_set = s;
+    warm = x;
     // Negative multipliers: drop the most negative one.
     int j = 0, worst = -1;
     double wl = tol_lam;
@@ -1290,17 +1365,18 @@ Update HtcConcrete::integrate_step(const State& old, const Vector6& de,
   {
     // Fall-back: every valid set, the likely ones first, without the early
     // exit of the Newton iteration.
-    static constexpr unsigned order[10] = {rankine_1,
-                                           htc_surface,
-                                           htc_apex,
-                                           htc_surface | htc_edge,
-                                           rankine_1 | rankine_2,
-                                           rankine_1 | rankine_2 | rankine_3,
-                                           htc_surface | rankine_1,
-                                           htc_surface | htc_edge | rankine_1,
-                                           htc_surface | rankine_1 | rankine_2,
-                                           htc_surface | rankine_1 | rankine_2 |
-                                               rankine_3};
+    static constexpr unsigned order[11] = {
+        rankine_1,
+        htc_surface,
+        htc_apex,
+        htc_surface | htc_edge,
+        rankine_1 | rankine_2,
+        rankine_1 | rankine_2 | rankine_3,
+        htc_surface | rankine_1,
+        htc_surface | htc_edge | rankine_1,
+        htc_surface | htc_edge | rankine_1 | rankine_2,
+        htc_surface | rankine_1 | rankine_2,
+        htc_surface | rankine_1 | rankine_2 | rankine_3};
     visited = 0;
     for (unsigned s : order)
     {

@@ -173,10 +173,13 @@ private:
   /// Solves one active set (Surface bits) of the return map; x = (sigma_1..3,
   /// kappa_c, kappa_t, multipliers), dsig_dtr = d(sigma)/d(trial sigma) in
   /// principal space (row-major 3x3). patient: no early exit on stalling.
+  /// warm (if warm_set != 0): the solution x of another set, the last
+  /// starting point tried.
   template <int M>
   bool solve_set(unsigned set, const std::array<double, 3>& str, double kcn,
                  double ktn, double kcd_old, double ktd_old, double dt,
-                 bool patient, std::array<double, 9>& x,
+                 bool patient, unsigned warm_set,
+                 const std::array<double, 9>& warm, std::array<double, 9>& x,
                  std::array<double, 9>& dsig_dtr, int& iterations) const;
   /// The full system (principal stresses, kappas, multipliers; exact
   /// Jacobian by AD): the second-line solver of a set.
