@@ -1,11 +1,12 @@
 // The common body of the demo executables: PETSc set-up, command line, case
 // file, error handling and exit codes (0 done, 2 bad input, 3 stopped with a
-// checkpoint).
+// checkpoint, 4 a nonlinear step that could not be solved).
 #pragma once
 
 #include <cstdio>
 #include <damseis/analysis/linear_seismic.h>
 #include <damseis/case/command_line.h>
+#include <damseis/dynamics/nonlinear_newmark.h>
 #include <damseis/results/progress.h>
 #include <filesystem>
 #include <petscsys.h>
@@ -50,6 +51,17 @@ int demo_main(int argc, char** argv, const std::string& name,
     if (rank == 0)
       std::fprintf(stderr, "%s: %s\n", name.c_str(), e.what());
     status = 3;
+  }
+  catch (const dynamics::StepFailure& e)
+  {
+    // A step the Newton iteration could not solve even with cut steps: the
+    // run stops (outputs so far stay) rather than accept it.
+    if (rank == 0)
+      std::fprintf(stderr,
+                   "%s: error: %s; try a smaller time.dt, a larger "
+                   "solver.max_cuts or a finer mesh\n",
+                   name.c_str(), e.what());
+    status = 4;
   }
   PetscFinalize();
   return status;

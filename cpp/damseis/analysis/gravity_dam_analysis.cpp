@@ -1,13 +1,18 @@
 #include "gravity_dam_analysis.h"
 #include "linear_seismic.h"
+#include "nonlinear_seismic.h"
 #include <damseis/geometry/tags.h>
+#include <damseis/results/progress.h>
+#include <fstream>
+#include <iomanip>
 
 namespace damseis::analysis
 {
-nlohmann::json run_gravity_dam_analysis(MPI_Comm comm,
-                                        const GravityDamConfig& cfg,
-                                        const std::filesystem::path& out_dir,
-                                        const std::string& case_text)
+namespace
+{
+nlohmann::json run_one(MPI_Comm comm, const GravityDamConfig& cfg,
+                       const std::filesystem::path& out_dir,
+                       const std::string& case_text)
 {
   const bool foundation = cfg.section.foundation;
   std::map<int, fem::Material> materials = {{tags::dam, cfg.concrete}};
@@ -20,14 +25,95 @@ nlohmann::json run_gravity_dam_analysis(MPI_Comm comm,
   else
     fe.fix({tags::dam_base});
 
-  nlohmann::json summary =
-      run_linear_seismic(fe, cfg.seismic, out_dir, case_text);
-  summary["analysis"] = "gravity dam section, linear elastic";
+  const auto kind = cfg.concrete_model.kind;
+  nlohmann::json summary;
+  if (kind == ConcreteModelKind::linear)
+  {
+    summary = run_linear_seismic(fe, cfg.seismic, out_dir, case_text);
+    summary["analysis"] = "gravity dam section, linear elastic";
+  }
+  else
+  {
+    summary =
+        run_nonlinear_seismic(fe, cfg.seismic, cfg.concrete_model, materials,
+                              cfg.plane, {}, out_dir, case_text);
+    summary["analysis"] =
+        "gravity dam section, HTC concrete (" + to_string(kind) + ")";
+  }
   summary["plane"] = cfg.plane == fem::PlaneMode::plane_stress ? "plane_stress"
                                                                : "plane_strain";
   summary["base"] = foundation ? "massless foundation" : "rigid";
   write_summary_and_plots(comm, summary, out_dir, cfg.seismic.plots,
                           "plot_gravity_dam.py");
   return summary;
+}
+
+/// table1.csv and table1.md from the summaries of the three models.
+void write_table1(
+    const std::vector<std::pair<std::string, nlohmann::json>>& runs,
+    const std::filesystem::path& out_dir)
+{
+  std::ofstream csv(out_dir / "table1.csv"), md(out_dir / "table1.md");
+  csv << "model,max_compression_mpa,max_tension_mpa,crest_displacement_cm,"
+         "max_kappa_t,newton_iterations_per_step,seconds_per_step\n";
+  md << "| Model | Compression (MPa) | Tension (MPa) | Crest displacement "
+        "(cm) | max kappa_t | Newton it./step | s/step |\n"
+        "|---|---|---|---|---|---|---|\n";
+  for (const auto& [name, s] : runs)
+  {
+    const double c = s["max_principal_compression_mpa"]["value"];
+    const double t = s["max_principal_tension_mpa"]["value"];
+    const double u =
+        s["crest_displacement_max_m"]["value"].get<double>() * 100.0;
+    const double kt = s["max_kappa_t"]["value"];
+    const double it = s["newton"]["iterations_per_step"];
+    const double sps = s["seconds_per_step"];
+    csv << name << "," << c << "," << t << "," << u << "," << kt << "," << it
+        << "," << sps << "\n";
+    md << std::fixed << "| " << name << " | " << std::setprecision(2) << c
+       << " | " << t << " | " << u << " | " << std::scientific
+       << std::setprecision(2) << kt << std::fixed << " | "
+       << std::setprecision(2) << it << " | " << std::setprecision(4) << sps
+       << " |\n";
+  }
+}
+} // namespace
+
+nlohmann::json run_gravity_dam_analysis(MPI_Comm comm,
+                                        const GravityDamConfig& cfg,
+                                        const std::filesystem::path& out_dir,
+                                        const std::string& case_text)
+{
+  if (!cfg.table1)
+    return run_one(comm, cfg, out_dir, case_text);
+  std::vector<std::pair<std::string, nlohmann::json>> runs;
+  for (ConcreteModelKind kind :
+       {ConcreteModelKind::elastic, ConcreteModelKind::plastic,
+        ConcreteModelKind::viscoplastic})
+  {
+    GravityDamConfig c = cfg;
+    c.table1 = false;
+    auto& m = c.concrete_model;
+    m.kind = kind;
+    m.params.mode =
+        kind == ConcreteModelKind::viscoplastic ? material::Mode::viscoplastic
+        : kind == ConcreteModelKind::plastic    ? material::Mode::plastic
+                                                : material::Mode::elastic;
+    if (kind == ConcreteModelKind::viscoplastic)
+    {
+      // Rate functions give the dynamic strength: static strengths.
+      m.params.fc0 /= m.factor_strength;
+      m.params.ft0 /= m.factor_strength;
+      m.factor_strength = 1.0;
+    }
+    results::print(comm, "== " + to_string(kind) + " ==");
+    runs.emplace_back(to_string(kind),
+                      run_one(comm, c, out_dir / to_string(kind), case_text));
+  }
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  if (rank == 0)
+    write_table1(runs, out_dir);
+  return runs.back().second;
 }
 } // namespace damseis::analysis

@@ -54,6 +54,11 @@ input::Schema gravity_dam_schema()
          "element size at the far boundaries (0: 2.5 x mesh.size)")
       .at_least(0);
   add_seismic_keys(s, gravity_dam_directions(), "[0.0, 103.0]", "[0.0, 0.0]");
+  add_concrete_keys(s);
+  s.boolean("study.table1", "false", "-",
+            "run the elastic, plastic and viscoplastic models (subfolders) "
+            "and write table1.csv/.md (the paper's Table 1); the "
+            "viscoplastic run uses the static strengths");
   // Koyna defaults for the shared keys.
   s.set_default("reservoir.level", "91.75");
   return s;
@@ -88,6 +93,9 @@ GravityDamConfig read_gravity_dam_config(const input::Case& c)
 
   g.concrete = {c.real("material.E"), c.real("material.nu"),
                 c.real("material.rho")};
+  g.concrete_model = read_concrete_settings(c, g.concrete.E, g.concrete.nu);
+  g.concrete.E = g.concrete_model.params.E;
+  g.table1 = c.boolean("study.table1");
   g.plane = c.string("material.plane") == "plane_strain"
                 ? fem::PlaneMode::plane_strain
                 : fem::PlaneMode::plane_stress;

@@ -2,6 +2,7 @@
 // into a validated configuration (SI units).
 #pragma once
 
+#include "concrete_settings.h"
 #include "seismic_settings.h"
 #include <damseis/case/case.h>
 #include <damseis/fem/elastic_model.h>
@@ -18,6 +19,11 @@ struct GravityDamConfig
   fem::Material concrete;
   fem::Material rock; ///< foundation (massless: rho = 0)
   SeismicSettings seismic;
+  /// Dam concrete model (linear engine or HTC elastic/plastic/viscoplastic);
+  /// concrete.E above already includes the dynamic factor.
+  ConcreteSettings concrete_model;
+  /// Run elastic, plastic and viscoplastic and write table1.csv/.md.
+  bool table1 = false;
 };
 
 /// Ground-motion directions of a 2D section: x horizontal, y vertical.

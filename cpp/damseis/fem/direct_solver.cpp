@@ -31,6 +31,13 @@ DirectSolver::DirectSolver(MPI_Comm comm, Factorization kind) : _kind(kind)
         " factorisation is serial; use solver.factorization = \"mumps\" or "
         "\"auto\" with MPI");
   }
+  create_ksp(comm);
+}
+
+void DirectSolver::create_ksp(MPI_Comm comm)
+{
+  if (_ksp)
+    KSPDestroy(&_ksp);
   KSPCreate(comm, &_ksp);
   KSPSetType(_ksp, KSPPREONLY);
   PC pc;
@@ -68,8 +75,65 @@ bool is_blocked(Mat A)
          t.find("sbaij") == std::string::npos;
 }
 
+void DirectSolver::factorize_lu(Mat A)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  PC pc;
+  KSPGetPC(_ksp, &pc);
+  if (_converted)
+    MatDestroy(&_converted);
+  PCSetType(pc, PCLU);
+  PCFactorSetMatSolverType(pc, _kind == Factorization::mumps ? MATSOLVERMUMPS
+                                                             : MATSOLVERPETSC);
+  if (_kind != Factorization::mumps)
+    PCFactorSetMatOrderingType(pc, MATORDERINGND);
+  MatSetOption(A, MAT_SYMMETRIC, PETSC_FALSE);
+  KSPSetOperators(_ksp, A, A);
+  KSPSetUp(_ksp);
+  _lu = true;
+  // A failed factorisation (e.g. a numerically singular matrix) is an
+  // exception here, before any solve uses the factors.
+  Mat F;
+  PCFactorGetMatrix(pc, &F);
+  MatFactorError err;
+  MatFactorGetError(F, &err);
+  if (err != MAT_FACTOR_NOERROR)
+  {
+    std::string detail;
+    if (_kind == Factorization::mumps)
+    {
+      PetscInt info1 = 0, info2 = 0;
+      MatMumpsGetInfog(F, 1, &info1);
+      MatMumpsGetInfog(F, 2, &info2);
+      detail = ", MUMPS INFOG(1) = " + std::to_string(info1) +
+               ", INFOG(2) = " + std::to_string(info2);
+    }
+    _failed = true;
+    // MUMPS keeps a failed instance's state: start afresh next time.
+    MPI_Comm comm = PetscObjectComm(reinterpret_cast<PetscObject>(_ksp));
+    create_ksp(comm);
+    throw std::runtime_error("LU factorisation failed (" + name() +
+                             "): factor error " +
+                             std::to_string(static_cast<int>(err)) + detail);
+  }
+  _failed = false;
+  _factor_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
+          .count();
+}
+
 void DirectSolver::factorize(Mat A)
 {
+  _lu = false;
+  {
+    PC pc;
+    KSPGetPC(_ksp, &pc);
+    PCSetType(pc, PCCHOLESKY);
+    if (_kind == Factorization::cholmod)
+      PCFactorSetMatSolverType(pc, MATSOLVERCHOLMOD);
+    if (_kind == Factorization::mumps)
+      PCFactorSetMatSolverType(pc, MATSOLVERMUMPS);
+  }
   // Parallel BAIJ rejects MAT_SPD: mark only the factorised matrix SPD.
   MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE);
   const auto t0 = std::chrono::steady_clock::now();
@@ -118,6 +182,8 @@ void DirectSolver::factorize(Mat A)
 
 void DirectSolver::solve(Vec b, Vec x) const
 {
+  if (_failed)
+    throw std::runtime_error("direct solve after a failed factorisation");
   KSPSolve(_ksp, b, x);
   KSPConvergedReason reason;
   KSPGetConvergedReason(_ksp, &reason);
@@ -161,9 +227,9 @@ std::string DirectSolver::name() const
            (type && std::string(type) == PCLU ? "lu" : "cholesky") + "-nd";
   }
   case Factorization::cholmod:
-    return "cholmod-cholesky";
+    return _lu ? "petsc-lu-nd" : "cholmod-cholesky";
   case Factorization::mumps:
-    return "mumps-cholesky";
+    return _lu ? "mumps-lu" : "mumps-cholesky";
   default:
     return "auto";
   }

@@ -37,6 +37,11 @@ public:
   /// solver's use of it. With blocked storage (BAIJ) PETSc's own solver uses
   /// LU (its fastest here); MUMPS and CHOLMOD get a converted copy.
   void factorize(Mat A);
+  /// Factorises a general (possibly non-symmetric or indefinite) A by LU:
+  /// PETSc's LU serially, MUMPS LU in parallel (CHOLMOD -> PETSc LU).
+  /// Throws std::runtime_error if the factorisation fails (then solve()
+  /// throws until the next successful factorisation).
+  void factorize_lu(Mat A);
   /// Solves A x = b with the stored factors.
   void solve(Vec b, Vec x) const;
   /// Name of the factorisation used, e.g. "petsc-cholesky-nd".
@@ -45,9 +50,13 @@ public:
   double factor_seconds() const { return _factor_seconds; }
 
 private:
+  /// (Re)creates the KSP with the settings of the constructor.
+  void create_ksp(MPI_Comm comm);
   KSP _ksp = nullptr;
   Mat _converted = nullptr; ///< A in the storage the package needs
   Factorization _kind;
+  bool _lu = false;     ///< the last factorisation was factorize_lu
+  bool _failed = false; ///< the last factorize_lu failed
   double _factor_seconds = 0.0;
 };
 } // namespace damseis::fem

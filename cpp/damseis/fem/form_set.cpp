@@ -3,6 +3,8 @@
 #include <elasticity_2d_p2.h>
 #include <elasticity_3d_p1.h>
 #include <elasticity_3d_p2.h>
+#include <plasticity_2d_p1.h>
+#include <plasticity_2d_p2.h>
 #include <stdexcept>
 
 namespace damseis::fem
@@ -37,5 +39,30 @@ const FormSet& form_set(int dim, int degree)
   }
   return sets[2 * (dim - 2) + (degree - 1)];
 }
+
+#define DAMSEIS_PLASTICITY_SET(DIM, DEG, MOD)                                  \
+  PlasticityFormSet                                                            \
+  {                                                                            \
+    DIM, DEG, form_##MOD##_L_residual, form_##MOD##_a_tangent,                 \
+        expression_##MOD##_strain, expression_##MOD##_position,                \
+        functionspace_form_##MOD##_L_residual,                                 \
+        functionspace_form_##MOD##_a_tangent                                   \
+  }
+
+const PlasticityFormSet& plasticity_form_set(int dim, int degree)
+{
+  static const PlasticityFormSet sets[2] = {
+      DAMSEIS_PLASTICITY_SET(2, 1, plasticity_2d_p1),
+      DAMSEIS_PLASTICITY_SET(2, 2, plasticity_2d_p2)};
+  if (dim != 2 || (degree != 1 && degree != 2))
+  {
+    throw std::invalid_argument(
+        "the nonlinear concrete model is available in 2D (degree 1 or 2) "
+        "only; got dimension " +
+        std::to_string(dim) + ", degree " + std::to_string(degree));
+  }
+  return sets[degree - 1];
+}
 } // namespace damseis::fem
 #undef DAMSEIS_FORM_SET
+#undef DAMSEIS_PLASTICITY_SET

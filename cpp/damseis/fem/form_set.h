@@ -34,4 +34,23 @@ struct FormSet
 /// The kernels for `dim` in {2, 3} and `degree` in {1, 2}; throws
 /// std::invalid_argument otherwise.
 const FormSet& form_set(int dim, int degree);
+
+/// The kernels of a nonlinear material with state at quadrature points
+/// (forms/plasticity_2d.py): internal force and tangent from the point
+/// values, and the strain and position expressions at the same points.
+struct PlasticityFormSet
+{
+  int dim = 0;
+  int degree = 0;
+  ufcx_form* L_residual = nullptr;
+  ufcx_form* a_tangent = nullptr;
+  ufcx_expression* strain = nullptr;
+  ufcx_expression* position = nullptr;
+  ufcx_function_space* (*space_of_residual)(const char*) = nullptr;
+  ufcx_function_space* (*space_of_tangent)(const char*) = nullptr;
+};
+
+/// The nonlinear-material kernels for `dim` = 2 and `degree` in {1, 2};
+/// throws std::invalid_argument otherwise (3D is not compiled yet).
+const PlasticityFormSet& plasticity_form_set(int dim, int degree);
 } // namespace damseis::fem

@@ -9,7 +9,8 @@ namespace damseis::results
 {
 std::vector<std::int32_t>
 face_points(const dolfinx::fem::FunctionSpace& S,
-            const dolfinx::mesh::MeshTags<std::int32_t>& facet_tags, int tag)
+            const dolfinx::mesh::MeshTags<std::int32_t>& facet_tags, int tag,
+            bool vertex_points)
 {
   auto mesh = S.mesh();
   const int tdim = mesh->topology().dim();
@@ -34,7 +35,7 @@ face_points(const dolfinx::fem::FunctionSpace& S,
     {
       auto dofs = dofmap.cell_dofs(c);
       auto cv = c_to_v->links(c);
-      if (dofs.size() == cv.size())
+      if (vertex_points && dofs.size() == cv.size())
       {
         // One point per cell vertex, in the cell's vertex order.
         for (std::size_t k = 0; k < cv.size(); ++k)

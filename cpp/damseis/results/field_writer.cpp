@@ -58,9 +58,23 @@ std::vector<double> cell_average_tensor(const dolfinx::fem::FunctionSpace& S,
   return out;
 }
 
-FieldWriter::FieldWriter(fem::ElasticModel& model,
-                         const std::filesystem::path& file)
-    : _model(model)
+std::vector<double> cell_max_scalar(const dolfinx::fem::FunctionSpace& S,
+                                    std::span<const double> v, int num_cells)
+{
+  std::vector<double> out(num_cells, -std::numeric_limits<double>::infinity());
+  for (int c = 0; c < num_cells; ++c)
+  {
+    for (std::int32_t d : S.dofmap()->cell_dofs(c))
+      out[c] = std::max(out[c], v[d]);
+  }
+  return out;
+}
+
+FieldWriter::FieldWriter(
+    fem::ElasticModel& model, const std::filesystem::path& file,
+    std::shared_ptr<const dolfinx::fem::FunctionSpace> stress_space,
+    const std::vector<std::string>& extra)
+    : _model(model), _S(stress_space ? stress_space : model.S())
 {
   auto mesh = model.mesh();
   _file = std::make_unique<dolfinx::io::XDMFFile>(mesh->comm(), file, "w");
@@ -73,6 +87,11 @@ FieldWriter::FieldWriter(fem::ElasticModel& model,
   _sig->name = "stress";
   _pmax->name = "max_principal_stress";
   _pmin->name = "min_principal_stress";
+  for (const std::string& name : extra)
+  {
+    _extra.push_back(std::make_shared<Function>(model.output_space("s_cell")));
+    _extra.back()->name = name;
+  }
 }
 
 FieldWriter::~FieldWriter()
@@ -80,13 +99,14 @@ FieldWriter::~FieldWriter()
   _file->close();
 }
 
-void FieldWriter::write(const Function& u, std::span<const double> s, double t)
+void FieldWriter::write(const Function& u, std::span<const double> s, double t,
+                        const std::vector<std::span<const double>>& extra)
 {
   _u->interpolate(u);
   auto mesh = _model.mesh();
   const int tdim = mesh->topology().dim();
   const std::int32_t n = owned_cells(*mesh);
-  const auto& S = *_model.S();
+  const auto& S = *_S;
   std::vector<double> tensors = cell_average_tensor(S, s, n, tdim);
   std::span<double> sig = _sig->x()->mutable_array();
   std::span<double> pmax = _pmax->x()->mutable_array();
@@ -107,18 +127,33 @@ void FieldWriter::write(const Function& u, std::span<const double> s, double t)
     pmax[sdofs.cell_dofs(c)[0]] = p1;
     pmin[sdofs.cell_dofs(c)[0]] = p3;
   }
+  for (std::size_t i = 0; i < _extra.size() && i < extra.size(); ++i)
+  {
+    const auto cmax = cell_max_scalar(S, extra[i], n);
+    std::span<double> y = _extra[i]->x()->mutable_array();
+    const auto& dm = *_extra[i]->function_space()->dofmap();
+    for (std::int32_t c = 0; c < n; ++c)
+      y[dm.cell_dofs(c)[0]] = cmax[c];
+  }
   for (auto& f : {_sig, _pmax, _pmin})
+    f->x()->scatter_fwd();
+  for (auto& f : _extra)
     f->x()->scatter_fwd();
   for (auto& f : {_u, _sig, _pmax, _pmin})
     _file->write_function(*f, t);
+  for (auto& f : _extra)
+    _file->write_function(*f, t);
 }
 
-void write_envelopes(fem::ElasticModel& model, const StressEnvelope& env,
-                     const std::filesystem::path& file)
+void write_envelopes(
+    fem::ElasticModel& model, const StressEnvelope& env,
+    const std::filesystem::path& file,
+    std::shared_ptr<const dolfinx::fem::FunctionSpace> stress_space,
+    bool vertex_points, const std::vector<PointScalar>& extra)
 {
   auto mesh = model.mesh();
   const std::int32_t n = owned_cells(*mesh);
-  const auto& S = *model.S();
+  const auto& S = stress_space ? *stress_space : *model.S();
   const auto Q = model.output_space("s_cell");
   const auto P1 = model.output_space("s_vertex");
   const double inf = std::numeric_limits<double>::infinity();
@@ -150,7 +185,7 @@ void write_envelopes(fem::ElasticModel& model, const StressEnvelope& env,
       // cell-centre point (degree 1) feeds all vertices of the cell.
       for (std::size_t k = 0; k < verts.size(); ++k)
       {
-        if (pts.size() == verts.size() && k != i)
+        if (vertex_points && pts.size() == verts.size() && k != i)
           continue;
         bmax[verts[k]] = std::max(bmax[verts[k]], hi);
         bmin[verts[k]] = std::min(bmin[verts[k]], lo);
@@ -172,9 +207,22 @@ void write_envelopes(fem::ElasticModel& model, const StressEnvelope& env,
     }
     f->x()->scatter_fwd();
   }
+  std::vector<std::unique_ptr<Function>> more;
+  for (const PointScalar& e : extra)
+  {
+    more.push_back(std::make_unique<Function>(Q));
+    more.back()->name = e.name;
+    const auto cm = cell_max_scalar(S, e.values, n);
+    std::span<double> y = more.back()->x()->mutable_array();
+    for (std::int32_t c = 0; c < n; ++c)
+      y[Q->dofmap()->cell_dofs(c)[0]] = cm[c];
+    more.back()->x()->scatter_fwd();
+  }
   dolfinx::io::XDMFFile xdmf(mesh->comm(), file, "w");
   xdmf.write_mesh(*mesh);
   for (Function* f : {&cmax, &cmin, &vmax, &vmin})
+    xdmf.write_function(*f, 0.0);
+  for (auto& f : more)
     xdmf.write_function(*f, 0.0);
   xdmf.close();
 }

@@ -31,6 +31,20 @@ StressEnvelope::StressEnvelope(const dolfinx::fem::FunctionSpace& S,
   }
 }
 
+StressEnvelope::StressEnvelope(int ncomp, std::span<const double> x,
+                               std::vector<std::int8_t> in_region)
+    : _ncomp(ncomp), _in_region(std::move(in_region))
+{
+  const std::size_t n = _in_region.size();
+  _max.assign(n, -std::numeric_limits<double>::infinity());
+  _min.assign(n, std::numeric_limits<double>::infinity());
+  _t_max.assign(n, 0.0);
+  _t_min.assign(n, 0.0);
+  _x.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+    _x[i] = {x[3 * i], x[3 * i + 1], x[3 * i + 2]};
+}
+
 void StressEnvelope::update(std::span<const double> s, double t)
 {
   const std::size_t n = _max.size();

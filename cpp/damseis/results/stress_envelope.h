@@ -29,6 +29,11 @@ public:
   /// extremes to (e.g. the dam); empty means every cell.
   StressEnvelope(const dolfinx::fem::FunctionSpace& S,
                  std::span<const std::int32_t> region_cells = {});
+  /// Points given explicitly (e.g. quadrature points, whose space cannot
+  /// tabulate coordinates): `ncomp` stress components per point, the
+  /// coordinates `x` (3 per owned point) and a region flag per owned point.
+  StressEnvelope(int ncomp, std::span<const double> x,
+                 std::vector<std::int8_t> in_region);
 
   /// Updates with the owned stress values `s` (layout of S, owned part).
   void update(std::span<const double> s, double t);

@@ -1,0 +1,557 @@
+#include "nonlinear_seismic.h"
+#include "checkpoint.h"
+#include "linear_seismic.h"
+#include "run_support.h"
+#include <chrono>
+#include <cmath>
+#include <damseis/fem/concrete_model.h>
+#include <damseis/geometry/tags.h>
+#include <damseis/results/face_points.h>
+#include <damseis/results/field_writer.h>
+#include <damseis/results/point_probe.h>
+#include <damseis/results/principal.h>
+#include <damseis/results/progress.h>
+#include <damseis/results/stress_envelope.h>
+#include <dolfinx/common/IndexMap.h>
+#include <dolfinx/fem/DofMap.h>
+#include <dolfinx/la/petsc.h>
+#include <dolfinx/mesh/Mesh.h>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+namespace damseis::analysis
+{
+namespace
+{
+using dolfinx::la::petsc::Matrix;
+using dolfinx::la::petsc::Vector;
+using nlohmann::json;
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0)
+{
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+/// The concrete model seen by the integrators (PETSc vectors in, material
+/// update through a ghosted Function).
+class ConcreteSystem : public dynamics::NonlinearSystem
+{
+public:
+  explicit ConcreteSystem(fem::ConcreteModel& m)
+      : _m(m), _u(m.elastic_model().V())
+  {
+  }
+  bool trial(Vec u, double dt) override
+  {
+    to_function(u, _u);
+    last = _m.update(_u, dt);
+    return last.failed == 0;
+  }
+  void internal_force(Vec f) override { _m.assemble_internal_force(f); }
+  void tangent(Mat A) override { _m.assemble_tangent(A); }
+  void accept() override
+  {
+    _m.accept();
+    accepted = last;
+  }
+  fem::MaterialUpdateStats last, accepted;
+
+private:
+  fem::ConcreteModel& _m;
+  dolfinx::fem::Function<double> _u;
+};
+
+/// Per owned point of the stress space, the maximum over time of a scalar
+/// and when it occurred.
+struct ScalarEnvelope
+{
+  std::vector<double> max, t;
+  explicit ScalarEnvelope(std::size_t n) : max(n, 0.0), t(n, 0.0) {}
+  void update(std::span<const double> v, double time)
+  {
+    for (std::size_t i = 0; i < max.size(); ++i)
+    {
+      if (v[i] > max[i])
+      {
+        max[i] = v[i];
+        t[i] = time;
+      }
+    }
+  }
+};
+
+/// Largest value over the flagged owned points of all ranks, with where and
+/// when.
+results::Extreme scalar_extreme(MPI_Comm comm, const ScalarEnvelope& e,
+                                std::span<const double> coords,
+                                const std::vector<std::int8_t>& flag)
+{
+  struct
+  {
+    double v;
+    int rank;
+  } local{-1.0, 0}, global;
+  MPI_Comm_rank(comm, &local.rank);
+  std::size_t arg = 0;
+  for (std::size_t i = 0; i < e.max.size(); ++i)
+  {
+    if (flag[i] && e.max[i] > local.v)
+    {
+      local.v = e.max[i];
+      arg = i;
+    }
+  }
+  MPI_Allreduce(&local, &global, 1, MPI_DOUBLE_INT, MPI_MAXLOC, comm);
+  std::array<double, 4> data = {0, 0, 0, 0};
+  if (local.rank == global.rank && !e.max.empty())
+    data = {coords[3 * arg], coords[3 * arg + 1], coords[3 * arg + 2],
+            e.t[arg]};
+  MPI_Bcast(data.data(), 4, MPI_DOUBLE, global.rank, comm);
+  return {global.v, {data[0], data[1], data[2]}, data[3]};
+}
+
+/// dam_points.csv on rank 0: one row per owned dam point of every rank.
+void write_dam_points(MPI_Comm comm, const results::StressEnvelope& env,
+                      const std::vector<std::int8_t>& in_dam,
+                      const std::vector<const std::vector<double>*>& columns,
+                      const std::filesystem::path& file)
+{
+  const int nc = 4 + static_cast<int>(columns.size());
+  std::vector<double> local;
+  for (std::size_t i = 0; i < in_dam.size(); ++i)
+  {
+    if (!in_dam[i])
+      continue;
+    const auto& x = env.point(static_cast<std::int32_t>(i));
+    local.insert(local.end(), {x[0], x[1], env.max_principal()[i] * 1e-6,
+                               env.min_principal()[i] * 1e-6});
+    for (const auto* c : columns)
+      local.push_back((*c)[i]);
+  }
+  int rank = 0, size = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &size);
+  int n = static_cast<int>(local.size());
+  std::vector<int> counts(size), offsets(size + 1, 0);
+  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
+  for (int r = 0; r < size; ++r)
+    offsets[r + 1] = offsets[r] + counts[r];
+  std::vector<double> all(rank == 0 ? offsets[size] : 0);
+  MPI_Gatherv(local.data(), n, MPI_DOUBLE, all.data(), counts.data(),
+              offsets.data(), MPI_DOUBLE, 0, comm);
+  if (rank != 0)
+    return;
+  std::ofstream csv(file);
+  csv << "x_m,y_m,max_principal_mpa,min_principal_mpa,kappa_t,kappa_c,"
+         "max_strain_rate_per_s,t_max_strain_rate_s,max_kappa_t_rate_per_s\n";
+  csv.precision(8);
+  for (std::size_t i = 0; i < all.size(); i += nc)
+  {
+    for (int k = 0; k < nc; ++k)
+      csv << all[i + k] << (k < nc - 1 ? "," : "\n");
+  }
+}
+} // namespace
+
+json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
+                           const ConcreteSettings& concrete,
+                           const std::map<int, fem::Material>& elastic,
+                           fem::PlaneMode plane,
+                           const std::vector<Vec>& extra_static_loads,
+                           const std::filesystem::path& out_dir,
+                           const std::string& case_text)
+{
+  const auto wall_start = Clock::now();
+  const auto model = fe.model();
+  MPI_Comm comm = model.mesh->comm();
+  int rank = 0, ranks = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &ranks);
+  const int dim = fe.dim();
+  const std::int64_t n_cells =
+      model.mesh->topology().index_map(dim)->size_global();
+  const std::int64_t n_dofs = fe.V()->dofmap()->index_map->size_global() * dim;
+  results::print(comm, "damseis: " + std::to_string(n_cells) + " cells, " +
+                           std::to_string(n_dofs) + " dofs, P" +
+                           std::to_string(fe.degree()) + ", " +
+                           std::to_string(ranks) + " rank(s), concrete " +
+                           to_string(concrete.kind));
+
+  const bool wet = s.reservoir.depth() > 0.0;
+  const fem::Reservoir* added = s.westergaard && wet ? &s.reservoir : nullptr;
+  Matrix K(fe.assemble_stiffness(), false);
+  Matrix M(fe.assemble_mass(added), false);
+  fem::ConcreteModel cm(fe, {{tags::dam, concrete.params}}, elastic, plane);
+  ConcreteSystem system(cm);
+
+  // Static stage: dead weight, then the reservoir (and silt, uplift) in
+  // increments, with the rate-independent material.
+  std::array<double, 3> g = {0, 0, 0};
+  g[dim - 1] = -s.gravity;
+  Vector F_g(fe.assemble_gravity(g), false);
+  Vector F_static = column_vector(K.mat());
+  VecCopy(F_g.vec(), F_static.vec());
+  if (wet)
+  {
+    Vector H(fe.assemble_hydrostatic(s.reservoir), false);
+    VecAXPY(F_static.vec(), 1.0, H.vec());
+  }
+  for (Vec extra : extra_static_loads)
+    VecAXPY(F_static.vec(), 1.0, extra);
+  Vector zero = column_vector(K.mat());
+  Vector u_static = column_vector(K.mat());
+  const auto static_g =
+      dynamics::solve_static(system, K.mat(), zero.vec(), F_g.vec(), 1,
+                             u_static.vec(), concrete.newton, s.factorization);
+  const auto static_r = dynamics::solve_static(
+      system, K.mat(), F_g.vec(), F_static.vec(), concrete.static_increments,
+      u_static.vec(), concrete.newton, s.factorization);
+  const std::vector<double> sig_static(cm.stress().begin(), cm.stress().end());
+  Vector fint0 = column_vector(K.mat());
+  system.internal_force(fint0.vec());
+  const double static_seconds = seconds_since(wall_start);
+  results::print(comm,
+                 "static stage: " +
+                     std::to_string(static_g.iterations + static_r.iterations) +
+                     " Newton iterations, " +
+                     std::to_string(system.accepted.inelastic) +
+                     " inelastic points");
+
+  // Modal analysis of the initial elastic system; Rayleigh damping with K0.
+  Matrix M0(nullptr, false);
+  if (added)
+    M0 = Matrix(fe.assemble_mass(nullptr), false);
+  const ModalResult modal =
+      modal_and_damping(K.mat(), M.mat(), added ? M0.mat() : nullptr, s);
+  std::ostringstream freqs;
+  for (double f : modal.modes.frequencies_hz)
+    freqs << " " << std::round(f * 1000) / 1000;
+  results::print(comm, "natural frequencies [Hz]:" + freqs.str());
+
+  // Dynamic stage: M a + C v + f_int(u) = F_static - M sum_c r_c a_gc(t),
+  // u relative to the base, total (static included).
+  dynamics::NonlinearNewmark newmark(M.mat(), K.mat(), modal.damping, s.scheme,
+                                     system, concrete.newton, s.factorization);
+  std::vector<int> active;
+  std::vector<Vector> influence, load;
+  for (int c = 0; c < dim; ++c)
+  {
+    if (!s.motion[c].active)
+      continue;
+    active.push_back(c);
+    influence.emplace_back(fe.influence(c), false);
+    load.push_back(column_vector(K.mat()));
+    MatMult(M.mat(), influence.back().vec(), load.back().vec());
+    VecScale(load.back().vec(), -1.0);
+  }
+  Vector f = column_vector(K.mat());
+  auto set_load = [&](int k)
+  {
+    VecCopy(F_static.vec(), f.vec());
+    for (std::size_t i = 0; i < active.size(); ++i)
+      VecAXPY(f.vec(), s.motion[active[i]].acceleration[k], load[i].vec());
+  };
+
+  std::filesystem::create_directories(out_dir);
+  if (rank == 0)
+    std::ofstream(out_dir / "case_used.toml") << case_text;
+  write_modes(
+      fe, modal.modes, [](Vec x) { return x; }, out_dir / "modes.xdmf");
+
+  // Points: the quadrature points of the owned cells.
+  auto Sq = cm.stress_space();
+  const std::int32_t n_pts = Sq->dofmap()->index_map->size_local();
+  std::vector<std::int8_t> in_dam(n_pts, 0);
+  for (std::int32_t c : region_cells(model, tags::dam))
+  {
+    for (std::int32_t d : Sq->dofmap()->cell_dofs(c))
+    {
+      if (d < n_pts)
+        in_dam[d] = 1;
+    }
+  }
+  results::StressEnvelope envelope(3, cm.coordinates(), in_dam);
+  ScalarEnvelope rate_env(n_pts), kt_rate_env(n_pts);
+  std::vector<std::vector<std::int32_t>> face_pts;
+  for (const auto& [name, tag] : s.faces)
+    face_pts.push_back(
+        results::face_points(*Sq, *model.facet_tags, tag, false));
+
+  results::PointProbe crest(*fe.V(), s.crest_point);
+  results::PointProbe base(*fe.V(), s.base_point);
+  const auto crest_static = crest.value_on_all(u_static.vec());
+  const auto base_static = base.value_on_all(u_static.vec());
+  const int n = s.steps;
+  const double dt = s.scheme.dt;
+  std::vector<double> hist(2 * dim * (n + 1), 0.0);
+  // Newton statistics: iterations, tangents, cuts (sums), max iterations.
+  std::vector<double> stats = {0, 0, 0, 0, 0};
+
+  int k0 = 0;
+  const std::filesystem::path ckpt_dir = out_dir / "checkpoint";
+  const std::vector<double> coords = fe.V()->tabulate_dof_coordinates(false);
+  const std::uint64_t print = fingerprint(coords);
+  std::optional<CheckpointData> restart;
+  if (s.restart)
+    restart = read_checkpoint(comm, ckpt_dir, print);
+  if (restart)
+  {
+    k0 = restart->step;
+    Vector u = column_vector(K.mat()), v = column_vector(K.mat()),
+           a = column_vector(K.mat()), fi = column_vector(K.mat());
+    set_owned_values(u.vec(), restart->arrays.at("u"));
+    set_owned_values(v.vec(), restart->arrays.at("v"));
+    set_owned_values(a.vec(), restart->arrays.at("a"));
+    set_owned_values(fi.vec(), restart->arrays.at("f_int"));
+    cm.restore(restart->arrays);
+    set_load(k0);
+    newmark.set_state(u.vec(), v.vec(), a.vec(), f.vec(), fi.vec());
+    envelope.restore(
+        restart->arrays.at("env_max"), restart->arrays.at("env_t_max"),
+        restart->arrays.at("env_min"), restart->arrays.at("env_t_min"));
+    rate_env.max = restart->arrays.at("rate_max");
+    rate_env.t = restart->arrays.at("rate_t");
+    kt_rate_env.max = restart->arrays.at("kt_rate_max");
+    kt_rate_env.t = restart->arrays.at("kt_rate_t");
+    hist = restart->arrays.at("history");
+    stats = restart->arrays.at("newton");
+    results::print(comm, "restarting from the checkpoint at step " +
+                             std::to_string(k0));
+  }
+  else
+  {
+    Vector v0 = column_vector(K.mat()), a0 = column_vector(K.mat());
+    for (std::size_t i = 0; i < active.size(); ++i)
+    {
+      VecAXPY(a0.vec(), -s.motion[active[i]].acceleration[0],
+              influence[i].vec());
+    }
+    set_load(0);
+    newmark.set_state(u_static.vec(), v0.vec(), a0.vec(), f.vec(), fint0.vec());
+  }
+
+  results::FieldWriter writer(
+      fe,
+      out_dir / (k0 == 0 ? std::string("fields.xdmf")
+                         : "fields_from_step" + std::to_string(k0) + ".xdmf"),
+      Sq, {"kappa_t", "kappa_c", "strain_rate"});
+  dolfinx::fem::Function<double> u_fn(fe.V());
+  std::vector<double> s_field(cm.stress().size());
+
+  auto record_state = [&](int k, double t)
+  {
+    auto sig = cm.stress();
+    if (s.stress_total)
+      std::copy(sig.begin(), sig.end(), s_field.begin());
+    else
+    {
+      for (std::size_t i = 0; i < s_field.size(); ++i)
+        s_field[i] = sig[i] - sig_static[i];
+    }
+    envelope.update(std::span<const double>(s_field.data(), 3 * n_pts), t);
+    rate_env.update(cm.strain_rate(), t);
+    kt_rate_env.update(cm.kappa_t_rate(), t);
+    const auto c = crest.value(newmark.u()), b = base.value(newmark.u());
+    for (int i = 0; i < dim; ++i)
+    {
+      hist[2 * dim * k + i] = c[i];
+      hist[2 * dim * k + dim + i] = b[i];
+    }
+    if (k % s.output_every == 0)
+    {
+      to_function(newmark.u(), u_fn);
+      writer.write(u_fn, s_field, t,
+                   {cm.kappa_t(), cm.kappa_c(), cm.strain_rate()});
+    }
+  };
+  auto checkpoint = [&](int k)
+  {
+    CheckpointData data;
+    data.step = k;
+    data.arrays = cm.save();
+    data.arrays["u"] = owned_values(newmark.u());
+    data.arrays["v"] = owned_values(newmark.v());
+    data.arrays["a"] = owned_values(newmark.a());
+    data.arrays["f_int"] = owned_values(newmark.f_int());
+    data.arrays["history"] = hist;
+    data.arrays["newton"] = stats;
+    auto span_vec = [](std::span<const double> x)
+    { return std::vector<double>(x.begin(), x.end()); };
+    data.arrays["env_max"] = span_vec(envelope.max_principal());
+    data.arrays["env_t_max"] = span_vec(envelope.max_times());
+    data.arrays["env_min"] = span_vec(envelope.min_principal());
+    data.arrays["env_t_min"] = span_vec(envelope.min_times());
+    data.arrays["rate_max"] = rate_env.max;
+    data.arrays["rate_t"] = rate_env.t;
+    data.arrays["kt_rate_max"] = kt_rate_env.max;
+    data.arrays["kt_rate_t"] = kt_rate_env.t;
+    write_checkpoint(comm, ckpt_dir, data, print);
+  };
+
+  results::print(comm, "time history: " + std::to_string(n) + " steps of " +
+                           std::to_string(dt) + " s, factorisation " +
+                           newmark.solver().name());
+  if (k0 == 0)
+    record_state(0, 0.0);
+  StopSignals signals;
+  results::Progress progress(comm, n - k0);
+  const auto loop_start = Clock::now();
+  for (int k = k0 + 1; k <= n; ++k)
+  {
+    set_load(k);
+    dynamics::StepReport rep;
+    try
+    {
+      rep = newmark.step(f.vec());
+    }
+    catch (const dynamics::StepFailure& e)
+    {
+      throw dynamics::StepFailure("step " + std::to_string(k) + " (t = " +
+                                  std::to_string(k * dt) + " s): " + e.what());
+    }
+    stats[0] += rep.iterations;
+    stats[1] += rep.tangent_factorizations;
+    stats[2] += rep.cuts;
+    stats[3] = std::max(stats[3], double(rep.iterations));
+    stats[4] = std::max(stats[4], double(system.accepted.inelastic));
+    record_state(k, k * dt);
+    progress.report(
+        k - k0, k * dt,
+        "  Newton " + std::to_string(rep.iterations) +
+            (rep.tangent_factorizations
+                 ? " (" + std::to_string(rep.tangent_factorizations) +
+                       " tangents)"
+                 : std::string()) +
+            (rep.cuts ? ", " + std::to_string(rep.cuts) + " cuts"
+                      : std::string()) +
+            ", inelastic points " + std::to_string(system.accepted.inelastic));
+    const bool stop = signals.requested(comm, k == s.stop_at_step);
+    if (stop ||
+        (s.checkpoint_every > 0 && k % s.checkpoint_every == 0 && k < n))
+      checkpoint(k);
+    if (stop)
+    {
+      throw Interrupted("stopped at step " + std::to_string(k) +
+                        "; checkpoint written to " + ckpt_dir.string() +
+                        "; resume with --set run.restart=true");
+    }
+  }
+  const double loop_seconds = seconds_since(loop_start);
+  results::reduce_history(comm, hist);
+  const json crest_summary =
+      write_crest_history(comm, hist, dim, n, dt, crest_static, base_static,
+                          true, out_dir / "crest.csv");
+
+  // Envelopes: stresses, and the state variables as cell maxima.
+  std::vector<double> rate_all(cm.strain_rate().size(), 0.0),
+      kt_rate_all(rate_all.size(), 0.0);
+  std::copy(rate_env.max.begin(), rate_env.max.end(), rate_all.begin());
+  std::copy(kt_rate_env.max.begin(), kt_rate_env.max.end(),
+            kt_rate_all.begin());
+  results::write_envelopes(fe, envelope, out_dir / "envelopes.xdmf", Sq, false,
+                           {{"kappa_t", cm.kappa_t()},
+                            {"kappa_c", cm.kappa_c()},
+                            {"max_strain_rate", rate_all},
+                            {"max_kappa_t_rate", kt_rate_all}});
+  const json faces = write_faces(comm, s, envelope, face_pts, dim, out_dir);
+  {
+    std::vector<double> kt(cm.kappa_t().begin(), cm.kappa_t().begin() + n_pts),
+        kc(cm.kappa_c().begin(), cm.kappa_c().begin() + n_pts);
+    write_dam_points(comm, envelope, in_dam,
+                     {&kt, &kc, &rate_env.max, &rate_env.t, &kt_rate_env.max},
+                     out_dir / "dam_points.csv");
+  }
+  const auto tension = envelope.max_tension(comm);
+  const auto compression = envelope.max_compression(comm);
+  ScalarEnvelope kt_final(n_pts);
+  kt_final.update(cm.kappa_t(), n * dt);
+  const auto kt_max = scalar_extreme(comm, kt_final, cm.coordinates(), in_dam);
+  const auto rate_max =
+      scalar_extreme(comm, rate_env, cm.coordinates(), in_dam);
+
+  const char* axis = "xyz";
+  json motion = json::object();
+  for (int i = 0; i < dim; ++i)
+  {
+    motion[std::string(1, axis[i])] = {
+        {"record", s.motion[i].record},
+        {"peak_g", s.motion[i].active ? s.motion[i].peak_g : 0.0}};
+  }
+  const int steps_run = std::max(1, n - k0);
+  const auto& p = concrete.params;
+  json summary = {
+      {"n_cells", n_cells},
+      {"n_dofs", n_dofs},
+      {"mesh_order", fe.degree()},
+      {"steps", n},
+      {"dt_s", dt},
+      {"frequencies_hz", modal.modes.frequencies_hz},
+      {"frequencies_dry_hz", modal.dry_hz},
+      {"added_mass", added != nullptr},
+      {"damping",
+       {{"ratio", s.damping_ratio},
+        {"f1_hz", modal.f1},
+        {"f2_hz", modal.f2},
+        {"a_mass", modal.damping.a_mass},
+        {"b_stiffness", modal.damping.b_stiffness}}},
+      {"stress", s.stress_total ? "total" : "seismic"},
+      {"crest_point",
+       std::vector<double>(crest.node().begin(), crest.node().begin() + dim)},
+      {"max_principal_tension_mpa", extreme_json(tension, dim)},
+      {"max_principal_compression_mpa", extreme_json(compression, dim)},
+      {"faces", faces},
+      {"ground_motion", motion},
+      {"concrete",
+       {{"model", to_string(concrete.kind)},
+        {"E_pa", p.E},
+        {"fc_mpa", p.fc0 * 1e-6},
+        {"ft_mpa", p.ft0 * 1e-6},
+        {"Gf_n_per_m", p.Gf},
+        {"dynamic_factor_E", concrete.factor_E},
+        {"dynamic_factor_strength", concrete.factor_strength},
+        {"material_bins", cm.material_count()},
+        {"cells_with_reduced_tensile_strength",
+         cm.cells_with_reduced_strength()}}},
+      {"max_kappa_t",
+       {{"value", kt_max.value}, {"x", kt_max.x[0]}, {"y", kt_max.x[1]}}},
+      {"max_strain_rate_per_s",
+       {{"value", rate_max.value},
+        {"x", rate_max.x[0]},
+        {"y", rate_max.x[1]},
+        {"t", rate_max.t}}},
+      {"newton",
+       {{"rtol", concrete.newton.rtol},
+        {"static_iterations", static_g.iterations + static_r.iterations},
+        {"static_cuts", static_g.cuts + static_r.cuts},
+        {"iterations", stats[0]},
+        {"iterations_per_step", stats[0] / steps_run},
+        {"max_iterations_in_a_step", stats[3]},
+        {"tangent_factorizations", stats[1]},
+        {"step_cuts", stats[2]},
+        {"max_inelastic_points", stats[4]}}},
+      {"solver", newmark.solver().name()},
+      {"setup_and_static_seconds", static_seconds},
+      {"modal_seconds", modal.seconds},
+      {"factorization_seconds", newmark.solver().factor_seconds()},
+      {"time_loop_seconds", loop_seconds},
+      {"seconds_per_step", loop_seconds / steps_run},
+      {"restarted_from_step", k0},
+      {"mpi_ranks", ranks},
+  };
+  summary.update(crest_summary);
+  summary["wall_seconds"] = seconds_since(wall_start);
+  results::print(
+      comm,
+      "max tension " + std::to_string(tension.value * 1e-6) +
+          " MPa, max compression " + std::to_string(compression.value * 1e-6) +
+          " MPa, max crest displacement " +
+          std::to_string(
+              crest_summary["crest_displacement_max_m"]["value"].get<double>() *
+              100) +
+          " cm, Newton iterations per step " +
+          std::to_string(stats[0] / steps_run));
+  return summary;
+}
+} // namespace damseis::analysis

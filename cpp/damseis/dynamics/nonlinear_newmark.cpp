@@ -1,0 +1,425 @@
+#include "nonlinear_newmark.h"
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace damseis::dynamics
+{
+namespace
+{
+double norm(Vec x)
+{
+  double n = 0.0;
+  VecNorm(x, NORM_2, &n);
+  return n;
+}
+
+/// Newton iteration on u for R(u) = 0 with a factorised initial matrix and,
+/// when that converges too slowly, the consistent matrix assembled into J.
+/// `residual` evaluates the trial state and R (false: material failure).
+/// On success u holds the solution and the system's trial state matches it.
+const bool trace = std::getenv("DAMSEIS_NEWTON_TRACE") != nullptr;
+
+bool newton(const std::function<bool(Vec, Vec)>& residual,
+            const std::function<void(Mat)>& jacobian,
+            const fem::DirectSolver& initial, Mat J,
+            fem::DirectSolver& tangent_solver, double reference, Vec u, Vec R,
+            Vec du, const NewtonSettings& s, StepReport& report)
+{
+  if (!residual(u, R))
+  {
+    if (trace)
+      std::fprintf(stderr, "newton: material failure at the predictor\n");
+    return false;
+  }
+  Vec u0, R0;
+  VecDuplicate(u, &u0);
+  VecDuplicate(R, &R0);
+  double r = norm(R), r_prev = r;
+  const double tol = s.rtol * reference;
+  bool use_tangent = false, converged = false;
+  // Non-monotone line search (Grippo, Lampariello & Lucidi 1986): a trial is
+  // accepted if it decreases the largest of the last 4 residual norms, so
+  // that full Newton steps through active-set changes are not cut back.
+  std::vector<double> recent = {r};
+  double r_best = r;
+  int it_best = 0;
+  for (int it = 0;; ++it)
+  {
+    report.residual = r / reference;
+    if (s.monitor)
+      s.monitor(it, r / reference);
+    if (trace)
+    {
+      std::fprintf(stderr, "newton: it %d  |R|/|F| %.3e%s\n", it, r / reference,
+                   use_tangent ? "  (tangent)" : "");
+    }
+    if (r <= tol)
+    {
+      converged = true;
+      break;
+    }
+    if (r < 0.5 * r_best)
+    {
+      r_best = r;
+      it_best = it;
+    }
+    // Stagnation (e.g. points cycling between loading and unloading on a
+    // steep softening branch): give up early, so that the step is cut; the
+    // inertia term a0 M of the shorter step regularises the softening.
+    if (it == s.max_iterations || !std::isfinite(r) ||
+        it - it_best >= s.stagnation_iterations)
+    {
+      break;
+    }
+    if (!use_tangent && it > 0 &&
+        (r > s.slow_ratio * r_prev || it >= s.modified_iterations))
+    {
+      use_tangent = true;
+    }
+    // Direction: the consistent tangent if in use, else the initial
+    // matrix; backtracking on ||R|| (a rejected trial includes material
+    // points whose return map failed). If the tangent direction finds no
+    // decrease, the initial matrix's direction is tried.
+    VecCopy(u, u0);
+    VecCopy(R, R0);
+    bool accepted = false;
+    for (int pass = use_tangent ? 0 : 1; pass < 2 && !accepted; ++pass)
+    {
+      if (pass == 0)
+      {
+        jacobian(J);
+        ++report.tangent_factorizations;
+        try
+        {
+          tangent_solver.factorize_lu(J);
+          tangent_solver.solve(R0, du);
+        }
+        catch (const std::runtime_error& e)
+        {
+          // A (numerically) singular tangent: use the initial matrix.
+          if (trace)
+            std::fprintf(stderr, "newton:   tangent failed: %s\n", e.what());
+          continue;
+        }
+      }
+      else
+        initial.solve(R0, du);
+      double dn = 0.0;
+      VecNorm(du, NORM_2, &dn);
+      if (!std::isfinite(dn))
+      {
+        if (trace)
+          std::fprintf(stderr, "newton:   non-finite direction (pass %d)\n",
+                       pass);
+        continue;
+      }
+      double eta = 1.0;
+      const double r_ref = *std::max_element(recent.begin(), recent.end());
+      for (int ls = 0; ls < 6; ++ls)
+      {
+        VecWAXPY(u, -eta, du, u0);
+        const bool ok = residual(u, R);
+        const double rt = ok ? norm(R) : INFINITY;
+        if (ok && rt <= (1.0 - 1e-4 * eta) * r_ref)
+        {
+          accepted = true;
+          r_prev = r;
+          r = rt;
+          recent.push_back(r);
+          if (recent.size() > 4)
+            recent.erase(recent.begin());
+          break;
+        }
+        if (trace)
+        {
+          std::fprintf(stderr, "newton:   line search eta %.3g rejected (%s)\n",
+                       eta, ok ? "no decrease" : "material failure");
+        }
+        eta *= 0.35;
+      }
+    }
+    ++report.iterations;
+    if (!accepted)
+      break;
+  }
+  VecDestroy(&u0);
+  VecDestroy(&R0);
+  return converged;
+}
+} // namespace
+
+StepReport solve_static(NonlinearSystem& system, Mat K0, Vec F_from, Vec F_to,
+                        int increments, Vec u, const NewtonSettings& settings,
+                        fem::Factorization factorization)
+{
+  MPI_Comm comm;
+  PetscObjectGetComm(reinterpret_cast<PetscObject>(K0), &comm);
+  // The tangent may be indefinite (softening): MUMPS' LU pivots.
+  fem::DirectSolver initial(comm, factorization),
+      tangent_solver(comm, fem::Factorization::mumps);
+  initial.factorize(K0);
+  Mat J;
+  MatDuplicate(K0, MAT_DO_NOT_COPY_VALUES, &J);
+  Vec F, R, du, ut, fint;
+  for (Vec* x : {&F, &R, &du, &ut, &fint})
+    VecDuplicate(u, x);
+
+  StepReport report;
+  auto residual = [&](Vec x, Vec r) -> bool
+  {
+    if (!system.trial(x, 0.0))
+      return false;
+    system.internal_force(fint);
+    VecWAXPY(r, -1.0, F, fint);
+    return true;
+  };
+  auto jacobian = [&](Mat A) { system.tangent(A); };
+
+  // Load factors still to reach, solved one after the other; a failed
+  // increment is replaced by its two halves.
+  std::vector<std::pair<double, int>> todo; // (target factor, cuts)
+  for (int i = increments; i >= 1; --i)
+    todo.emplace_back(static_cast<double>(i) / increments, 0);
+  double done = 0.0;
+  while (!todo.empty())
+  {
+    const auto [target, cuts] = todo.back();
+    VecAXPBYPCZ(F, 1.0 - target, target, 0.0, F_from, F_to);
+    const double reference = std::max(norm(F), norm(F_to));
+    VecCopy(u, ut);
+    if (newton(residual, jacobian, initial, J, tangent_solver, reference, ut, R,
+               du, settings, report))
+    {
+      system.accept();
+      VecCopy(ut, u);
+      done = target;
+      todo.pop_back();
+      continue;
+    }
+    if (cuts >= settings.max_cuts)
+    {
+      for (Vec* x : {&F, &R, &du, &ut, &fint})
+        VecDestroy(x);
+      MatDestroy(&J);
+      throw StepFailure("static load step to factor " + std::to_string(target) +
+                        " did not converge after " + std::to_string(cuts) +
+                        " halvings (last residual " +
+                        std::to_string(report.residual) + " of the load)");
+    }
+    todo.back().second = cuts + 1;
+    todo.emplace_back(0.5 * (done + target), cuts + 1);
+    ++report.cuts;
+  }
+  for (Vec* x : {&F, &R, &du, &ut, &fint})
+    VecDestroy(x);
+  MatDestroy(&J);
+  return report;
+}
+
+NonlinearNewmark::NonlinearNewmark(Mat M, Mat K0, RayleighDamping damping,
+                                   TimeScheme scheme, NonlinearSystem& system,
+                                   NewtonSettings settings,
+                                   fem::Factorization factorization)
+    : _M(M), _K0(K0), _damping(damping), _scheme(scheme), _system(system),
+      _settings(settings), _factorization(factorization)
+{
+  if (!(scheme.dt > 0.0 && std::isfinite(scheme.dt)))
+    throw std::invalid_argument("time step must be positive");
+  if (!(scheme.alpha >= -1.0 / 3.0 - 1e-14 && scheme.alpha <= 0.0))
+    throw std::invalid_argument("HHT alpha must lie in [-1/3, 0]");
+  for (Vec* x : {&_u, &_v, &_a, &_f, &_fint, &_ut, &_vt, &_at, &_fint_t, &_r,
+                 &_g, &_w1, &_w2, &_du, &_tmp})
+  {
+    MatCreateVecs(K0, x, nullptr);
+    VecSet(*x, 0.0);
+  }
+  MPI_Comm comm;
+  PetscObjectGetComm(reinterpret_cast<PetscObject>(K0), &comm);
+  // The consistent tangent of a softening material is indefinite: MUMPS'
+  // LU pivots (PETSc's own LU on 2x2 blocks does not).
+  _tangent_solver =
+      std::make_unique<fem::DirectSolver>(comm, fem::Factorization::mumps);
+  StepReport dummy;
+  initial_solver(0, dummy);
+}
+
+NonlinearNewmark::~NonlinearNewmark()
+{
+  for (Vec* x : {&_u, &_v, &_a, &_f, &_fint, &_ut, &_vt, &_at, &_fint_t, &_r,
+                 &_g, &_w1, &_w2, &_du, &_tmp})
+  {
+    VecDestroy(x);
+  }
+  for (auto& [level, entry] : _initial)
+  {
+    entry.second.reset();
+    MatDestroy(&entry.first);
+  }
+  if (_J)
+    MatDestroy(&_J);
+}
+
+const fem::DirectSolver& NonlinearNewmark::solver() const
+{
+  return *_initial.at(0).second;
+}
+
+const fem::DirectSolver& NonlinearNewmark::initial_solver(int level,
+                                                          StepReport& report)
+{
+  auto it = _initial.find(level);
+  if (it != _initial.end())
+    return *it->second.second;
+  const double dt = _scheme.dt / std::pow(2.0, level);
+  const double beta = _scheme.beta(), gamma = _scheme.gamma();
+  const double w = 1.0 + _scheme.alpha;
+  const double a0 = 1.0 / (beta * dt * dt), a1 = gamma / (beta * dt);
+  // J0 = a0 M + (1 + alpha)(a1 C + K0).
+  Mat J0;
+  MatDuplicate(_K0, MAT_COPY_VALUES, &J0);
+  MatScale(J0, w * (1.0 + a1 * _damping.b_stiffness));
+  MatAXPY(J0, a0 + w * a1 * _damping.a_mass, _M, SUBSET_NONZERO_PATTERN);
+  MPI_Comm comm;
+  PetscObjectGetComm(reinterpret_cast<PetscObject>(_K0), &comm);
+  auto solver = std::make_unique<fem::DirectSolver>(comm, _factorization);
+  solver->factorize(J0);
+  if (level > 0)
+    ++report.initial_factorizations;
+  auto& entry = _initial[level];
+  entry.first = J0;
+  entry.second = std::move(solver);
+  return *entry.second;
+}
+
+void NonlinearNewmark::set_state(Vec u, Vec v, Vec a, Vec f, Vec f_int)
+{
+  VecCopy(u, _u);
+  VecCopy(v, _v);
+  VecCopy(a, _a);
+  VecCopy(f, _f);
+  VecCopy(f_int, _fint);
+}
+
+StepReport NonlinearNewmark::step(Vec f_next)
+{
+  StepReport report;
+  advance(_scheme.dt, f_next, 0, report);
+  return report;
+}
+
+void NonlinearNewmark::advance(double dt, Vec f_next, int level,
+                               StepReport& report)
+{
+  if (solve_step(dt, f_next, level, report))
+    return;
+  if (level >= _settings.max_cuts)
+  {
+    throw StepFailure(
+        "time step did not converge after " + std::to_string(level) +
+        " halvings (dt = " + std::to_string(dt) + " s, last residual " +
+        std::to_string(report.residual) + " of the load)");
+  }
+  // Two halves, the load interpolated linearly.
+  Vec f_mid;
+  VecDuplicate(f_next, &f_mid);
+  VecAXPBYPCZ(f_mid, 0.5, 0.5, 0.0, _f, f_next);
+  ++report.cuts;
+  try
+  {
+    advance(0.5 * dt, f_mid, level + 1, report);
+    advance(0.5 * dt, f_next, level + 1, report);
+  }
+  catch (...)
+  {
+    VecDestroy(&f_mid);
+    throw;
+  }
+  VecDestroy(&f_mid);
+}
+
+bool NonlinearNewmark::solve_step(double dt, Vec f_next, int level,
+                                  StepReport& report)
+{
+  const double beta = _scheme.beta(), gamma = _scheme.gamma();
+  const double alpha = _scheme.alpha, w = 1.0 + alpha;
+  const double a0 = 1.0 / (beta * dt * dt), a1 = gamma / (beta * dt),
+               a2 = 1.0 / (beta * dt), a3 = 0.5 / beta - 1.0;
+  const double aM = _damping.a_mass, bK = _damping.b_stiffness;
+  const fem::DirectSolver& J0 = initial_solver(level, report);
+  if (!_J)
+    MatDuplicate(_K0, MAT_DO_NOT_COPY_VALUES, &_J);
+
+  // Constant part of the HHT residual:
+  // g = -alpha (C v + f_int) - (1 + alpha) f' + alpha f.
+  VecCopy(_v, _tmp);
+  VecScale(_tmp, -alpha * aM);
+  MatMult(_M, _tmp, _g);
+  VecCopy(_v, _tmp);
+  VecScale(_tmp, -alpha * bK);
+  MatMultAdd(_K0, _tmp, _g, _g);
+  {
+    const PetscScalar c[3] = {-alpha, -w, alpha};
+    Vec x[3] = {_fint, f_next, _f};
+    VecMAXPY(_g, 3, c, x);
+  }
+  const double reference = std::max(norm(f_next), 1e-300);
+
+  // R(u') = M (a' + w aM v') + K0 (w bK v') + w f_int(u') + g, with
+  // a' = a0 (u' - u) - a2 v - a3 a and v' = v + dt ((1 - gamma) a + gamma a').
+  auto kinematics = [&](Vec ut)
+  {
+    VecWAXPY(_at, -1.0, _u, ut);
+    VecScale(_at, a0);
+    VecAXPY(_at, -a2, _v);
+    VecAXPY(_at, -a3, _a);
+    VecCopy(_v, _vt);
+    VecAXPY(_vt, dt * (1.0 - gamma), _a);
+    VecAXPY(_vt, dt * gamma, _at);
+  };
+  auto residual = [&](Vec ut, Vec R) -> bool
+  {
+    if (!_system.trial(ut, dt))
+      return false;
+    _system.internal_force(_fint_t);
+    kinematics(ut);
+    VecWAXPY(_w1, w * aM, _vt, _at);
+    MatMult(_M, _w1, R);
+    VecCopy(_vt, _w2);
+    VecScale(_w2, w * bK);
+    MatMultAdd(_K0, _w2, R, R);
+    VecAXPY(R, w, _fint_t);
+    VecAXPY(R, 1.0, _g);
+    return true;
+  };
+  // Consistent effective matrix: a0 M + (1 + alpha)(a1 C + K_T)
+  // = (a0 + w a1 aM) M + w a1 bK K0 + w K_T.
+  auto jacobian = [&](Mat J)
+  {
+    _system.tangent(J);
+    MatScale(J, w);
+    MatAXPY(J, a0 + w * a1 * aM, _M, SUBSET_NONZERO_PATTERN);
+    MatAXPY(J, w * a1 * bK, _K0, SAME_NONZERO_PATTERN);
+  };
+
+  VecCopy(_u, _ut); // predictor: u' = u
+  if (!newton(residual, jacobian, J0, _J, *_tangent_solver, reference, _ut, _r,
+              _du, _settings, report))
+  {
+    return false;
+  }
+  // Accept: the kinematics and internal force of the converged trial.
+  kinematics(_ut);
+  VecCopy(_ut, _u);
+  VecCopy(_vt, _v);
+  VecCopy(_at, _a);
+  VecCopy(_fint_t, _fint);
+  VecCopy(f_next, _f);
+  _system.accept();
+  return true;
+}
+} // namespace damseis::dynamics

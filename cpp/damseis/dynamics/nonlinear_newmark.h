@@ -1,0 +1,132 @@
+// Implicit time integration of nonlinear structural dynamics,
+//   M a + C v + f_int(u) = f(t),   C = a_M M + b_K K0 (Rayleigh, initial K0),
+// by the HHT-alpha method with a Newton iteration per step (algorithms.md
+// 6.1-6.2), and the quasi-static solution of f_int(u) = F in load
+// increments (the static stage, 6.4).
+//
+// Matrix strategy: the initial (elastic) effective matrix is factorised once
+// and used first (modified Newton); when the residual does not fall fast
+// enough, the consistent tangent of the material is assembled and
+// factorised (full Newton) for the rest of the step. A step that still does
+// not converge is cut in halves (recursively); a step that cannot be solved
+// even then throws StepFailure: an unconverged step is never accepted.
+#pragma once
+
+#include "newmark.h"
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <stdexcept>
+
+namespace damseis::dynamics
+{
+/// Newton settings (algorithms.md 6.1: ||R|| <= 1e-6 ||F||).
+struct NewtonSettings
+{
+  double rtol = 1e-6;      ///< ||R|| <= rtol * ||F_ext||
+  int max_iterations = 30; ///< per (sub)step
+  /// Give up a (sub)step (and cut it) when the residual has not halved in
+  /// this many iterations.
+  int stagnation_iterations = 5;
+  int modified_iterations = 4; ///< at most this many with the initial matrix
+  double slow_ratio = 0.25;    ///< switch to the tangent if ||R|| falls less
+  int max_cuts = 6;            ///< halvings of a step (dt / 64)
+  /// Called after every residual evaluation of an accepted iterate with the
+  /// iteration number and ||R|| / ||F_ext|| (tests, logging).
+  std::function<void(int, double)> monitor;
+};
+
+/// The nonlinear part of the model, seen by the integrator.
+class NonlinearSystem
+{
+public:
+  virtual ~NonlinearSystem() = default;
+  /// Material update at the trial displacement u reached from the committed
+  /// state over dt (0: a static step). False if a material point failed.
+  virtual bool trial(Vec u, double dt) = 0;
+  /// Internal force of the last trial (layout of K0's columns, zero at
+  /// fixed dofs).
+  virtual void internal_force(Vec f) = 0;
+  /// Tangent of the last trial into A (the pattern of K0; fixed rows and
+  /// columns identity).
+  virtual void tangent(Mat A) = 0;
+  /// The last trial becomes the committed state.
+  virtual void accept() = 0;
+};
+
+/// Work of one (possibly cut) step.
+struct StepReport
+{
+  int iterations = 0;             ///< Newton iterations (all sub-steps)
+  int tangent_factorizations = 0; ///< consistent tangents factorised
+  int initial_factorizations = 0; ///< effective matrices for cut steps
+  int cuts = 0;                   ///< sub-steps beyond the first
+  double residual = 0.0;          ///< final ||R|| / ||F_ext||
+};
+
+/// Thrown when a step cannot be solved even after the allowed cuts.
+struct StepFailure : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+/// Quasi-static solution of f_int(u) = F: the load goes from F_from to F_to
+/// in `increments` equal steps (static material: dt = 0). u: committed
+/// displacement on entry, solution on exit. K0: the initial stiffness (fixed
+/// rows identity).
+StepReport solve_static(NonlinearSystem& system, Mat K0, Vec F_from, Vec F_to,
+                        int increments, Vec u, const NewtonSettings& settings,
+                        fem::Factorization factorization);
+
+class NonlinearNewmark
+{
+public:
+  /// M, K0 must stay alive while the integrator is used.
+  NonlinearNewmark(Mat M, Mat K0, RayleighDamping damping, TimeScheme scheme,
+                   NonlinearSystem& system, NewtonSettings settings,
+                   fem::Factorization factorization);
+  ~NonlinearNewmark();
+  NonlinearNewmark(const NonlinearNewmark&) = delete;
+  NonlinearNewmark& operator=(const NonlinearNewmark&) = delete;
+
+  /// State at the current time: u, v, a, external load f and the internal
+  /// force f_int(u) of the committed material state (all copied).
+  void set_state(Vec u, Vec v, Vec a, Vec f, Vec f_int);
+  /// Advances one step to the external load f_next = f(t + dt).
+  StepReport step(Vec f_next);
+
+  Vec u() const { return _u; }
+  Vec v() const { return _v; }
+  Vec a() const { return _a; }
+  Vec f_int() const { return _fint; }
+  const TimeScheme& scheme() const { return _scheme; }
+  /// The factorisation of the initial effective matrix (full step).
+  const fem::DirectSolver& solver() const;
+
+private:
+  /// One step of length dt from (u, v, a, f, f_int) to f_next; `level` is
+  /// the number of halvings so far.
+  void advance(double dt, Vec f_next, int level, StepReport& report);
+  /// Newton iterations of one step; true if converged (state not touched
+  /// on failure).
+  bool solve_step(double dt, Vec f_next, int level, StepReport& report);
+  /// The initial effective matrix for a step dt / 2^level, factorised.
+  const fem::DirectSolver& initial_solver(int level, StepReport& report);
+
+  Mat _M, _K0;
+  RayleighDamping _damping;
+  TimeScheme _scheme;
+  NonlinearSystem& _system;
+  NewtonSettings _settings;
+  fem::Factorization _factorization;
+  std::map<int, std::pair<Mat, std::unique_ptr<fem::DirectSolver>>> _initial;
+  Mat _J = nullptr; ///< consistent effective matrix
+  std::unique_ptr<fem::DirectSolver> _tangent_solver;
+  Vec _u = nullptr, _v = nullptr, _a = nullptr, _f = nullptr, _fint = nullptr;
+  // Work vectors.
+  Vec _ut = nullptr, _vt = nullptr, _at = nullptr, _fint_t = nullptr,
+      _r = nullptr, _g = nullptr, _w1 = nullptr, _w2 = nullptr, _du = nullptr,
+      _tmp = nullptr, _fmid = nullptr;
+};
+} // namespace damseis::dynamics

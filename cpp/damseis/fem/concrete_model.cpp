@@ -1,0 +1,458 @@
+#include "concrete_model.h"
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <dolfinx/common/IndexMap.h>
+#include <dolfinx/fem/assembler.h>
+#include <dolfinx/fem/petsc.h>
+#include <dolfinx/fem/utils.h>
+#include <dolfinx/la/petsc.h>
+#include <dolfinx/mesh/Mesh.h>
+#include <dolfinx/mesh/MeshTags.h>
+#include <numeric>
+#include <stdexcept>
+
+namespace damseis::fem
+{
+namespace dfem = dolfinx::fem;
+
+namespace
+{
+/// Row-major view for Expression::eval.
+struct RowMajor
+{
+  double* data;
+  std::size_t cols;
+  double& operator()(std::size_t i, std::size_t j)
+  {
+    return data[i * cols + j];
+  }
+};
+
+/// Voigt (11, 22, 33, 12, 23, 13) indices of the in-plane components
+/// (xx, yy, xy).
+constexpr int plane_index[3] = {0, 1, 3};
+
+/// Largest absolute principal value of a strain (rate) in Voigt form with
+/// engineering shear; plane: xy only.
+double max_abs_principal_strain(const std::array<double, 6>& e)
+{
+  const double c = 0.5 * (e[0] + e[1]);
+  const double r = std::hypot(0.5 * (e[0] - e[1]), 0.5 * e[3]);
+  return std::max({std::abs(c + r), std::abs(c - r), std::abs(e[2])});
+}
+} // namespace
+
+ConcreteModel::ConcreteModel(
+    ElasticModel& fe,
+    const std::map<int, material::ConcreteParameters>& concrete,
+    const std::map<int, Material>& elastic, PlaneMode plane)
+    : _fe(fe), _plane(plane), _forms(plasticity_form_set(fe.dim(), fe.degree()))
+{
+  auto mesh = fe.model().mesh;
+  const int tdim = mesh->topology().dim();
+  _Sq = std::make_shared<dfem::FunctionSpace>(
+      dfem::create_functionspace(_forms.space_of_residual, "sig", mesh));
+  _Cq = std::make_shared<dfem::FunctionSpace>(
+      dfem::create_functionspace(_forms.space_of_tangent, "Ct", mesh));
+  _sig = std::make_shared<dfem::Function<double>>(_Sq);
+  _Ct = std::make_shared<dfem::Function<double>>(_Cq);
+  _u = std::make_shared<dfem::Function<double>>(fe.V());
+  auto V = fe.V();
+  _L = std::make_shared<dfem::Form<double>>(dfem::create_form<double>(
+      *_forms.L_residual, {V}, {{"sig", _sig}}, {}, {}, mesh));
+  _a = std::make_shared<dfem::Form<double>>(dfem::create_form<double>(
+      *_forms.a_tangent, {V, V}, {{"Ct", _Ct}}, {}, {}, mesh));
+  _strain = std::make_unique<dfem::Expression<double>>(
+      dfem::create_expression<double>(*_forms.strain, {{"u", _u}}, {}, mesh));
+  _nq = static_cast<int>(_strain->X().second[0]);
+
+  auto cmap = mesh->topology().index_map(tdim);
+  _num_owned_cells = cmap->size_local();
+  _num_cells = cmap->size_local() + cmap->num_ghosts();
+  const std::size_t np = static_cast<std::size_t>(_num_cells) * _nq;
+
+  // Point coordinates (and the point -> dof map).
+  {
+    std::vector<std::int32_t> cells(_num_cells);
+    std::iota(cells.begin(), cells.end(), 0);
+    auto position = dfem::create_expression<double>(
+        *_forms.position,
+        std::map<std::string, std::shared_ptr<const dfem::Function<double>>>{},
+        std::map<std::string, std::shared_ptr<const dfem::Constant<double>>>{},
+        mesh);
+    std::vector<double> xq(np * 2);
+    RowMajor view{xq.data(), static_cast<std::size_t>(_nq) * 2};
+    position.eval(std::span<const std::int32_t>(cells), view);
+    const auto& dm = *_Sq->dofmap();
+    const std::int32_t ndofs =
+        dm.index_map->size_local() + dm.index_map->num_ghosts();
+    _coords.assign(3 * ndofs, 0.0);
+    _dof.resize(np);
+    _dof_c.resize(np);
+    for (std::int32_t c = 0; c < _num_cells; ++c)
+    {
+      auto dofs = dm.cell_dofs(c);
+      for (int q = 0; q < _nq; ++q)
+      {
+        const std::size_t p = static_cast<std::size_t>(c) * _nq + q;
+        _dof[p] = dofs[q];
+        _dof_c[p] = _Cq->dofmap()->cell_dofs(c)[q];
+        _coords[3 * dofs[q]] = xq[2 * p];
+        _coords[3 * dofs[q] + 1] = xq[2 * p + 1];
+      }
+    }
+    _sig_committed.assign(3 * ndofs, 0.0);
+    for (auto& o : _out)
+      o.assign(ndofs, 0.0);
+  }
+
+  // Material object per cell: region and crack-band width bin.
+  std::vector<int> region(_num_cells, -1);
+  const auto& tags = *fe.model().cell_tags;
+  for (std::size_t i = 0; i < tags.indices().size(); ++i)
+    region[tags.indices()[i]] = tags.values()[i];
+  const auto& x = mesh->geometry().x();
+  const auto& gdofs = mesh->geometry().dofmap();
+  std::map<std::pair<int, int>, std::int32_t> bins;
+  _cell_material.resize(_num_cells);
+  std::int64_t reduced_local = 0;
+  for (std::int32_t c = 0; c < _num_cells; ++c)
+  {
+    const int r = region[c];
+    auto v = gdofs.links(c);
+    auto d = [&](int k, int j) { return x[3 * v[k] + j] - x[3 * v[0] + j]; };
+    const double area = 0.5 * std::abs(d(1, 0) * d(2, 1) - d(1, 1) * d(2, 0));
+    const double h = std::sqrt(2.0 * area);
+    const auto it = concrete.find(r);
+    const int bin =
+        it == concrete.end()
+            ? 0
+            : static_cast<int>(std::lround(std::log(h) / std::log(1.01)));
+    auto [pos, inserted] =
+        bins.emplace(std::make_pair(r, bin), std::int32_t(_dynamic.size()));
+    if (inserted)
+    {
+      material::ConcreteParameters p;
+      if (it != concrete.end())
+      {
+        p = it->second;
+        p.element_size = std::pow(1.01, bin);
+        // The rare increments a single backward-Euler step cannot solve
+        // are retried in sub-steps (material/README.md).
+        p.max_substeps = std::max(p.max_substeps, 4);
+      }
+      else
+      {
+        auto e = elastic.find(r);
+        if (e == elastic.end())
+          throw std::invalid_argument("no material given for region tag " +
+                                      std::to_string(r));
+        p.mode = material::Mode::elastic;
+        p.E = e->second.E;
+        p.nu = e->second.nu;
+      }
+      _dynamic.push_back(std::make_unique<material::HtcConcrete>(p));
+      if (p.mode == material::Mode::viscoplastic)
+        p.mode = material::Mode::plastic;
+      _static.push_back(std::make_unique<material::HtcConcrete>(p));
+    }
+    _cell_material[c] = pos->second;
+    if (c < _num_owned_cells &&
+        _dynamic[pos->second]->parameters().mode != material::Mode::elastic &&
+        _dynamic[pos->second]->derived().tension_strength_reduced)
+    {
+      ++reduced_local;
+    }
+  }
+  MPI_Allreduce(&reduced_local, &_reduced_cells, 1, MPI_INT64_T, MPI_SUM,
+                mesh->comm());
+
+  _state.assign(np, material::State{});
+  _trial = _state;
+  _eps.assign(np, {0, 0, 0, 0, 0, 0});
+  _eps_trial = _eps;
+  _strain_values.assign(np * 3, 0.0);
+  // Initial tangent: elastic.
+  std::span<double> ct = _Ct->x()->mutable_array();
+  for (std::int32_t c = 0; c < _num_cells; ++c)
+  {
+    const auto D = _dynamic[_cell_material[c]]->elastic_tangent();
+    for (int q = 0; q < _nq; ++q)
+    {
+      const std::int32_t dof = _dof_c[static_cast<std::size_t>(c) * _nq + q];
+      for (int i = 0; i < 3; ++i)
+      {
+        for (int j = 0; j < 3; ++j)
+        {
+          double v = D[plane_index[i] * 6 + plane_index[j]];
+          if (_plane == PlaneMode::plane_stress)
+            v -= D[plane_index[i] * 6 + 2] * D[2 * 6 + plane_index[j]] /
+                 D[2 * 6 + 2];
+          ct[dof * 9 + i * 3 + j] = v;
+        }
+      }
+    }
+  }
+}
+
+material::Update ConcreteModel::integrate_point(
+    const material::HtcConcrete& m, const material::State& old,
+    const std::array<double, 6>& eps_old, const double* e, double dt,
+    std::array<double, 6>& eps_new, double* ct) const
+{
+  material::Vector6 de = {
+      e[0] - eps_old[0], e[1] - eps_old[1], 0.0, e[2] - eps_old[3], 0.0, 0.0};
+  material::Update up;
+  if (_plane == PlaneMode::plane_strain)
+    up = m.integrate(old, de, dt);
+  else
+  {
+    // sigma_zz = 0 by Newton on the out-of-plane strain increment
+    // (sigma_zz is monotone in eps_zz). Where the point is perfectly
+    // plastic along zz the algorithmic slope vanishes: a secant or the
+    // elastic slope is used instead.
+    const double nu = m.derived().nu;
+    de[2] = -nu / (1.0 - nu) * (de[0] + de[1]);
+    const double scale = m.derived().ft0;
+    const double elastic_slope = m.elastic_tangent()[2 * 6 + 2];
+    double s_prev = 0.0, e_prev = 0.0;
+    for (int it = 0; it < 60; ++it)
+    {
+      up = m.integrate(old, de, dt);
+      const double s33 = up.state.stress[2];
+      double smax = 0.0;
+      for (double s : up.state.stress)
+        smax = std::max(smax, std::abs(s));
+      // 1e-8: the return map itself moves an on-surface stress by ~1e-10
+      // relative (round-off), which a tighter test would chase forever.
+      if (!up.converged || std::abs(s33) <= 1e-8 * (smax + scale))
+        break;
+      if (it == 59)
+        up.converged = false;
+      // Slope: the algorithmic one; if it (nearly) vanishes, the secant of
+      // the last two iterates; else the elastic one.
+      double slope = up.tangent[2 * 6 + 2];
+      if (!(slope > 1e-6 * elastic_slope))
+      {
+        const double secant =
+            it > 0 && de[2] != e_prev ? (s33 - s_prev) / (de[2] - e_prev) : 0.0;
+        slope = secant > 1e-6 * elastic_slope ? secant : elastic_slope;
+      }
+      s_prev = s33;
+      e_prev = de[2];
+      de[2] -= s33 / slope;
+    }
+  }
+  for (int i = 0; i < 6; ++i)
+    eps_new[i] = eps_old[i] + de[i];
+  // A non-finite algorithmic tangent (e.g. a degenerate corner) is replaced
+  // by the elastic one: still a valid Newton-like matrix for the global
+  // iteration, whose residual decides convergence.
+  if (!std::all_of(up.tangent.begin(), up.tangent.end(),
+                   [](double v) { return std::isfinite(v); }))
+  {
+    up.tangent = m.elastic_tangent();
+  }
+  const auto& T = up.tangent;
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      double v = T[plane_index[i] * 6 + plane_index[j]];
+      if (_plane == PlaneMode::plane_stress)
+        v -= T[plane_index[i] * 6 + 2] * T[2 * 6 + plane_index[j]] /
+             T[2 * 6 + 2];
+      ct[i * 3 + j] = v;
+    }
+  }
+  return up;
+}
+
+MaterialUpdateStats ConcreteModel::update(const dfem::Function<double>& u,
+                                          double dt)
+{
+  std::copy(u.x()->array().begin(), u.x()->array().end(),
+            _u->x()->mutable_array().begin());
+  std::vector<std::int32_t> cells(_num_cells);
+  std::iota(cells.begin(), cells.end(), 0);
+  RowMajor view{_strain_values.data(), static_cast<std::size_t>(_nq) * 3};
+  _strain->eval(std::span<const std::int32_t>(cells), view);
+
+  std::span<double> sig = _sig->x()->mutable_array();
+  std::span<double> ct = _Ct->x()->mutable_array();
+  std::int64_t counts[3] = {0, 0, 0};
+  int max_it = 0;
+  for (std::int32_t c = 0; c < _num_cells; ++c)
+  {
+    const auto& m =
+        dt > 0.0 ? *_dynamic[_cell_material[c]] : *_static[_cell_material[c]];
+    for (int q = 0; q < _nq; ++q)
+    {
+      const std::size_t p = static_cast<std::size_t>(c) * _nq + q;
+      const std::int32_t dof = _dof[p];
+      const material::Update up =
+          integrate_point(m, _state[p], _eps[p], &_strain_values[3 * p], dt,
+                          _eps_trial[p], &ct[9 * _dof_c[p]]);
+      _trial[p] = up.state;
+      for (int i = 0; i < 3; ++i)
+        sig[3 * dof + i] = up.state.stress[plane_index[i]];
+      if (!up.converged && std::getenv("DAMSEIS_MATERIAL_TRACE"))
+      {
+        const auto& o = _state[p];
+        std::fprintf(
+            stderr,
+            "material failure: dt %.17g h %.17g kc %.17g kt %.17g kcd %.17g "
+            "ktd %.17g\n  stress %.17g %.17g %.17g %.17g %.17g %.17g\n"
+            "  d_eps %.17g %.17g %.17g %.17g %.17g %.17g\n",
+            dt, m.parameters().element_size, o.kappa_c, o.kappa_t,
+            o.kappa_c_rate, o.kappa_t_rate, o.stress[0], o.stress[1],
+            o.stress[2], o.stress[3], o.stress[4], o.stress[5],
+            _eps_trial[p][0] - _eps[p][0], _eps_trial[p][1] - _eps[p][1],
+            _eps_trial[p][2] - _eps[p][2], _eps_trial[p][3] - _eps[p][3], 0.0,
+            0.0);
+      }
+      if (c < _num_owned_cells)
+      {
+        ++counts[0];
+        counts[1] += up.active != 0;
+        counts[2] += !up.converged;
+        max_it = std::max(max_it, up.iterations);
+      }
+    }
+  }
+  _trial_dt = dt;
+  MaterialUpdateStats s;
+  std::int64_t total[3];
+  MPI_Comm comm = _fe.mesh()->comm();
+  MPI_Allreduce(counts, total, 3, MPI_INT64_T, MPI_SUM, comm);
+  MPI_Allreduce(&max_it, &s.max_iterations, 1, MPI_INT, MPI_MAX, comm);
+  s.points = total[0];
+  s.inelastic = total[1];
+  s.failed = total[2];
+  return s;
+}
+
+void ConcreteModel::accept()
+{
+  const std::size_t np = _state.size();
+  for (std::size_t p = 0; p < np; ++p)
+  {
+    const std::int32_t dof = _dof[p];
+    const auto& s = _trial[p];
+    _out[0][dof] = s.kappa_t;
+    _out[1][dof] = s.kappa_c;
+    _out[2][dof] = s.kappa_t_rate;
+    _out[3][dof] = s.kappa_c_rate;
+    if (_trial_dt > 0.0)
+    {
+      std::array<double, 6> rate;
+      for (int i = 0; i < 6; ++i)
+        rate[i] = (_eps_trial[p][i] - _eps[p][i]) / _trial_dt;
+      _out[4][dof] = max_abs_principal_strain(rate);
+    }
+    else
+      _out[4][dof] = 0.0;
+  }
+  _state.swap(_trial);
+  _eps.swap(_eps_trial);
+  _trial = _state;
+  _eps_trial = _eps;
+  std::copy(_sig->x()->array().begin(), _sig->x()->array().end(),
+            _sig_committed.begin());
+}
+
+void ConcreteModel::assemble_internal_force(Vec f, bool apply_bc) const
+{
+  auto V = _fe.V();
+  const auto& map = *V->dofmap()->index_map;
+  Vec b = dolfinx::la::petsc::create_vector(map, V->dofmap()->index_map_bs());
+  VecSet(b, 0.0);
+  dfem::petsc::assemble_vector(b, *_L);
+  VecGhostUpdateBegin(b, ADD_VALUES, SCATTER_REVERSE);
+  VecGhostUpdateEnd(b, ADD_VALUES, SCATTER_REVERSE);
+  if (apply_bc)
+    dfem::petsc::set_bc(b, _fe.bcs(), nullptr);
+  // Owned values into f (f may or may not be ghosted).
+  const double* src = nullptr;
+  double* dst = nullptr;
+  PetscInt n = 0;
+  VecGetLocalSize(f, &n);
+  VecGetArrayRead(b, &src);
+  VecGetArray(f, &dst);
+  std::copy_n(src, n, dst);
+  VecRestoreArray(f, &dst);
+  VecRestoreArrayRead(b, &src);
+  VecDestroy(&b);
+}
+
+Mat ConcreteModel::assemble_tangent() const
+{
+  Mat A = dfem::petsc::create_matrix(*_a, "baij");
+  assemble_tangent(A);
+  return A;
+}
+
+void ConcreteModel::assemble_tangent(Mat A) const
+{
+  MatZeroEntries(A);
+  dfem::assemble_matrix(dolfinx::la::petsc::Matrix::set_block_fn(A, ADD_VALUES),
+                        *_a, _fe.bcs());
+  MatAssemblyBegin(A, MAT_FLUSH_ASSEMBLY);
+  MatAssemblyEnd(A, MAT_FLUSH_ASSEMBLY);
+  dfem::set_diagonal(dolfinx::la::petsc::Matrix::set_fn(A, INSERT_VALUES),
+                     *_fe.V(), _fe.bcs(), 1.0);
+  MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY);
+  MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY);
+}
+
+std::map<std::string, std::vector<double>> ConcreteModel::save() const
+{
+  const std::size_t np = _state.size();
+  std::vector<double> state;
+  state.reserve(np * 22);
+  for (std::size_t p = 0; p < np; ++p)
+  {
+    const auto& s = _state[p];
+    state.insert(state.end(), s.stress.begin(), s.stress.end());
+    state.insert(state.end(), s.plastic_strain.begin(), s.plastic_strain.end());
+    state.insert(state.end(),
+                 {s.kappa_c, s.kappa_t, s.kappa_c_rate, s.kappa_t_rate});
+    state.insert(state.end(), _eps[p].begin(), _eps[p].end());
+  }
+  std::map<std::string, std::vector<double>> out = {
+      {"material_state", state}, {"material_sigma", _sig_committed}};
+  for (int k = 0; k < 5; ++k)
+    out["material_out" + std::to_string(k)] = _out[k];
+  return out;
+}
+
+void ConcreteModel::restore(
+    const std::map<std::string, std::vector<double>>& arrays)
+{
+  const auto& state = arrays.at("material_state");
+  const std::size_t np = _state.size();
+  if (state.size() != np * 22)
+    throw std::runtime_error("checkpoint material state has the wrong size");
+  for (std::size_t p = 0; p < np; ++p)
+  {
+    const double* v = &state[22 * p];
+    auto& s = _state[p];
+    std::copy_n(v, 6, s.stress.begin());
+    std::copy_n(v + 6, 6, s.plastic_strain.begin());
+    s.kappa_c = v[12];
+    s.kappa_t = v[13];
+    s.kappa_c_rate = v[14];
+    s.kappa_t_rate = v[15];
+    std::copy_n(v + 16, 6, _eps[p].begin());
+  }
+  _trial = _state;
+  _eps_trial = _eps;
+  _sig_committed = arrays.at("material_sigma");
+  std::copy(_sig_committed.begin(), _sig_committed.end(),
+            _sig->x()->mutable_array().begin());
+  for (int k = 0; k < 5; ++k)
+    _out[k] = arrays.at("material_out" + std::to_string(k));
+}
+} // namespace damseis::fem

@@ -1,0 +1,132 @@
+// The nonlinear (HTC viscoplastic) concrete of a 2D dam model: material
+// state at the quadrature points, its update by the return map for a trial
+// displacement, and the internal force and consistent tangent assembled from
+// the point values (forms/plasticity_2d.py).
+#pragma once
+
+#include "elastic_model.h"
+#include <damseis/material/concrete.h>
+#include <dolfinx/fem/Expression.h>
+#include <map>
+#include <memory>
+#include <span>
+#include <vector>
+
+namespace damseis::fem
+{
+/// Counts of one material update.
+struct MaterialUpdateStats
+{
+  std::int64_t points = 0;    ///< points updated (owned cells, all ranks)
+  std::int64_t inelastic = 0; ///< points with an active return map
+  std::int64_t failed = 0;    ///< points whose local Newton did not converge
+  int max_iterations = 0;     ///< largest local Newton count
+};
+
+/// Material state at the quadrature points of a 2D model.
+///
+/// Every region gets an HtcConcrete: the regions listed in `concrete` use
+/// those parameters (their `mode` selects elastic / plastic / viscoplastic),
+/// all others stay linear elastic with the ElasticModel's material (given
+/// again in `elastic`). The crack-band width of a cell is h = sqrt(2 A)
+/// (the side of the square that two right triangles of area A make; exact
+/// for a band of such elements across a structured mesh), rounded to 1%
+/// bins so that cells of similar size share a material object (the energy
+/// error of the rounding is below 0.5%).
+///
+/// Plane strain: eps_zz = 0. Plane stress: eps_zz is solved per point by
+/// Newton on sigma_zz = 0 (the tangent is condensed accordingly).
+///
+/// Static steps (dt = 0) use the rate-independent version of each material
+/// (R = 1, as algorithms.md 6.4 asks for the static stage).
+class ConcreteModel
+{
+public:
+  ConcreteModel(ElasticModel& fe,
+                const std::map<int, material::ConcreteParameters>& concrete,
+                const std::map<int, Material>& elastic, PlaneMode plane);
+
+  ElasticModel& elastic_model() { return _fe; }
+
+  /// Updates the trial state for the displacement `u` (a Function on V with
+  /// ghosts up to date) reached over the time step `dt` (0: static) from
+  /// the committed state; fills the stress and tangent coefficients.
+  /// Collective (reduces the counts).
+  MaterialUpdateStats update(const dolfinx::fem::Function<double>& u,
+                             double dt);
+  /// Makes the trial state the committed state (strain rates from dt).
+  void accept();
+
+  /// Internal force of the trial state into `f` (layout of V, zero at fixed
+  /// dofs when `apply_bc`); ghost-consistent.
+  void assemble_internal_force(Vec f, bool apply_bc = true) const;
+  /// Tangent of the trial state, fixed rows and columns identity; the
+  /// pattern of ElasticModel::assemble_stiffness.
+  Mat assemble_tangent() const;
+  /// Assembles the tangent into an existing matrix of that pattern.
+  void assemble_tangent(Mat A) const;
+
+  /// Number of quadrature points per cell.
+  int points_per_cell() const { return _nq; }
+  /// Quadrature-point stress space (3 components, blocked).
+  std::shared_ptr<const dolfinx::fem::FunctionSpace> stress_space() const
+  {
+    return _Sq;
+  }
+  /// Committed stress values (sxx, syy, sxy) in the layout of stress_space()
+  /// (owned and ghost points).
+  std::span<const double> stress() const { return _sig_committed; }
+  /// Coordinates of the points in the layout of stress_space() (x, y, z).
+  std::span<const double> coordinates() const { return _coords; }
+
+  /// Per point (layout of stress_space(), one value per point), committed:
+  /// equivalent viscoplastic strains, their rates, and the largest absolute
+  /// principal total strain rate of the last step.
+  std::span<const double> kappa_t() const { return _out[0]; }
+  std::span<const double> kappa_c() const { return _out[1]; }
+  std::span<const double> kappa_t_rate() const { return _out[2]; }
+  std::span<const double> kappa_c_rate() const { return _out[3]; }
+  std::span<const double> strain_rate() const { return _out[4]; }
+
+  /// The whole committed state as arrays (for checkpoints) and back.
+  std::map<std::string, std::vector<double>> save() const;
+  void restore(const std::map<std::string, std::vector<double>>& arrays);
+
+  /// Number of distinct material objects (bins of region and h).
+  std::size_t material_count() const { return _dynamic.size(); }
+  /// Cells whose tensile strength was lowered to avoid snap-back (h larger
+  /// than the characteristic length; see material/README.md), all ranks.
+  std::int64_t cells_with_reduced_strength() const { return _reduced_cells; }
+
+private:
+  /// One point: old state and total strain (Voigt 6) -> new state; the
+  /// condensed 3x3 tangent into `ct`. Returns the update.
+  material::Update integrate_point(const material::HtcConcrete& m,
+                                   const material::State& old,
+                                   const std::array<double, 6>& eps_old,
+                                   const double* eps_new_plane, double dt,
+                                   std::array<double, 6>& eps_new,
+                                   double* ct) const;
+
+  ElasticModel& _fe;
+  PlaneMode _plane;
+  const PlasticityFormSet& _forms;
+  int _nq = 0;
+  std::int32_t _num_cells = 0, _num_owned_cells = 0;
+  std::shared_ptr<dolfinx::fem::FunctionSpace> _Sq, _Cq;
+  std::shared_ptr<dolfinx::fem::Function<double>> _sig, _Ct, _u;
+  std::shared_ptr<dolfinx::fem::Form<double>> _L, _a;
+  std::unique_ptr<dolfinx::fem::Expression<double>> _strain;
+  std::vector<std::unique_ptr<material::HtcConcrete>> _dynamic, _static;
+  std::vector<std::int32_t> _cell_material; ///< per local cell
+  std::vector<std::int32_t> _dof;           ///< point p -> Sq dof (block)
+  std::vector<std::int32_t> _dof_c;         ///< point p -> Cq dof (block)
+  // Committed and trial states, per point p = cell * nq + q.
+  std::vector<material::State> _state, _trial;
+  std::vector<std::array<double, 6>> _eps, _eps_trial;
+  std::vector<double> _sig_committed, _coords, _strain_values;
+  std::array<std::vector<double>, 5> _out;
+  double _trial_dt = 0.0;
+  std::int64_t _reduced_cells = 0;
+};
+} // namespace damseis::fem
