@@ -4,7 +4,10 @@ and contour maps of the principal-stress envelopes on the section.
 
 Usage: plot_gravity_dam.py OUT_DIR
 Reads OUT_DIR/crest.csv, OUT_DIR/envelopes.h5 and OUT_DIR/summary.json;
-writes OUT_DIR/crest_history.png and OUT_DIR/envelopes.png.
+writes OUT_DIR/crest_history.png and OUT_DIR/envelopes.png. For nonlinear
+concrete runs (OUT_DIR/dam_points.csv) also OUT_DIR/strain_rates.png: the
+maximum strain rate and the final equivalent tensile viscoplastic strain at
+the quadrature points (the paper's Fig. 9).
 """
 import json
 import sys
@@ -79,6 +82,35 @@ def plot_envelopes(out: Path, summary: dict) -> None:
     plt.close(fig)
 
 
+def plot_strain_rates(out: Path, summary: dict) -> None:
+    d = np.genfromtxt(out / "dam_points.csv", delimiter=",", names=True)
+    fig, axes = plt.subplots(1, 2, figsize=(11, 6.5))
+    rate = np.maximum(d["max_strain_rate_per_s"], 1e-8)
+    sc = axes[0].scatter(d["x_m"], d["y_m"], c=np.log10(rate), s=4,
+                         cmap="viridis")
+    fig.colorbar(sc, ax=axes[0], shrink=0.8,
+                 label="log10(max principal strain rate [1/s])")
+    e = summary["max_strain_rate_per_s"]
+    axes[0].plot([e["x"]], [e["y"]], "r*", ms=9)
+    axes[0].set_title(f"Maximum strain rate (peak {e['value']:.3g} /s "
+                      f"at t = {e['t']:.2f} s)", fontsize=10)
+    kt = d["kappa_t"]
+    sc = axes[1].scatter(d["x_m"], d["y_m"], c=kt, s=4, cmap="magma_r",
+                         vmin=0, vmax=max(kt.max(), 1e-12))
+    fig.colorbar(sc, ax=axes[1], shrink=0.8, label="kappa_t [-]")
+    axes[1].set_title("Equivalent tensile viscoplastic strain (end)",
+                      fontsize=10)
+    for ax in axes:
+        ax.set_aspect("equal")
+        ax.set_xlabel("x [m]")
+        ax.set_ylabel("y [m]")
+    model = summary.get("concrete", {}).get("model", "")
+    fig.suptitle(f"Concrete model: {model}")
+    fig.tight_layout()
+    fig.savefig(out / "strain_rates.png", dpi=130)
+    plt.close(fig)
+
+
 def main() -> None:
     if len(sys.argv) != 2:
         sys.exit(__doc__)
@@ -86,6 +118,8 @@ def main() -> None:
     summary = json.loads((out / "summary.json").read_text())
     plot_crest(out, summary)
     plot_envelopes(out, summary)
+    if (out / "dam_points.csv").exists():
+        plot_strain_rates(out, summary)
 
 
 if __name__ == "__main__":

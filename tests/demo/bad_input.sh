@@ -54,6 +54,9 @@ expect unreadable_record 'badrecord\.toml.*motion\.horizontal\.record.*bad\.at2'
 expect missing_case_file 'nonexistent\.toml' --case "$work/nonexistent.toml"
 expect bad_set_syntax 'mesh\.order' --set mesh.order
 expect unknown_option 'bogus' --bogus
+expect unknown_concrete_model 'koyna\.toml.*material\.model' --set material.model=damage
+expect tensile_above_half_fc 'koyna\.toml.*concrete\.ft' --set material.model=plastic --set concrete.ft=20e6
+expect negative_fracture_energy 'koyna\.toml.*concrete\.Gf' --set concrete.Gf=-1
 
 if [ "$failures" -ne 0 ]; then
   echo "$failures bad-input checks failed"; exit 1
