@@ -3,6 +3,7 @@
 #include "nonlinear_seismic.h"
 #include <damseis/geometry/tags.h>
 #include <damseis/results/progress.h>
+#include <dolfinx/la/petsc.h>
 #include <fstream>
 #include <iomanip>
 
@@ -25,11 +26,22 @@ nlohmann::json run_one(MPI_Comm comm, const GravityDamConfig& cfg,
   else
     fe.fix({tags::dam_base});
 
+  // Silt and uplift (static loads besides dead weight and water).
+  std::vector<dolfinx::la::petsc::Vector> extra;
+  if (cfg.silt.level > 0.0)
+    extra.emplace_back(fem::assemble_silt(fe, cfg.silt), false);
+  if (cfg.uplift_on)
+    extra.emplace_back(fem::assemble_uplift(fe, cfg.uplift), false);
+  std::vector<Vec> extra_vecs;
+  for (auto& v : extra)
+    extra_vecs.push_back(v.vec());
+
   const auto kind = cfg.concrete_model.kind;
   nlohmann::json summary;
   if (kind == ConcreteModelKind::linear)
   {
-    summary = run_linear_seismic(fe, cfg.seismic, out_dir, case_text);
+    summary = run_linear_seismic(fe, cfg.seismic, out_dir, case_text, nullptr,
+                                 extra_vecs);
     summary["analysis"] = "gravity dam section, linear elastic";
   }
   else
@@ -43,6 +55,8 @@ nlohmann::json run_one(MPI_Comm comm, const GravityDamConfig& cfg,
   summary["plane"] = cfg.plane == fem::PlaneMode::plane_stress ? "plane_stress"
                                                                : "plane_strain";
   summary["base"] = foundation ? "massless foundation" : "rigid";
+  summary["silt_level_m"] = cfg.silt.level;
+  summary["uplift"] = cfg.uplift_on;
   write_summary_and_plots(comm, summary, out_dir, cfg.seismic.plots,
                           "plot_gravity_dam.py");
   return summary;
@@ -105,6 +119,12 @@ nlohmann::json run_gravity_dam_analysis(MPI_Comm comm,
       m.params.fc0 /= m.factor_strength;
       m.params.ft0 /= m.factor_strength;
       m.factor_strength = 1.0;
+      if (cfg.viscoplastic_static_E)
+      {
+        m.params.E /= m.factor_E;
+        c.concrete.E /= m.factor_E;
+        m.factor_E = 1.0;
+      }
     }
     results::print(comm, "== " + to_string(kind) + " ==");
     runs.emplace_back(to_string(kind),

@@ -55,10 +55,32 @@ input::Schema gravity_dam_schema()
       .at_least(0);
   add_seismic_keys(s, gravity_dam_directions(), "[0.0, 103.0]", "[0.0, 0.0]");
   add_concrete_keys(s);
+  s.real("silt.level", "0.0", "m",
+         "elevation of the silt surface against the upstream face (0: no "
+         "silt)")
+      .at_least(0);
+  s.real("silt.unit_weight", "9000", "N/m3", "submerged unit weight of silt")
+      .above(0);
+  s.real("silt.friction_angle", "15", "deg", "internal friction angle of silt")
+      .between(0, 45);
+  s.boolean("uplift.enabled", "false", "-",
+            "uplift on the dam base (acts on the dam; with a foundation block)");
+  s.real("uplift.tailwater", "0.0", "m",
+         "tailwater level above the base (head at the toe)")
+      .at_least(0);
+  s.real("uplift.drain_x", "-1", "m",
+         "x of the drainage line (negative: 10% of the base width from the "
+         "heel)");
+  s.real("uplift.alpha", "0.25", "-",
+         "residual uplift ratio at the drainage line")
+      .between(0, 1);
   s.boolean("study.table1", "false", "-",
             "run the elastic, plastic and viscoplastic models (subfolders) "
             "and write table1.csv/.md (the paper's Table 1); the "
             "viscoplastic run uses the static strengths");
+  s.boolean("study.viscoplastic_static_E", "false", "-",
+            "in study.table1, the viscoplastic run also uses the static E "
+            "(no concrete.dynamic_factor_E)");
   // Koyna defaults for the shared keys.
   s.set_default("reservoir.level", "91.75");
   return s;
@@ -96,6 +118,7 @@ GravityDamConfig read_gravity_dam_config(const input::Case& c)
   g.concrete_model = read_concrete_settings(c, g.concrete.E, g.concrete.nu);
   g.concrete.E = g.concrete_model.params.E;
   g.table1 = c.boolean("study.table1");
+  g.viscoplastic_static_E = c.boolean("study.viscoplastic_static_E");
   g.plane = c.string("material.plane") == "plane_strain"
                 ? fem::PlaneMode::plane_strain
                 : fem::PlaneMode::plane_stress;
@@ -114,6 +137,30 @@ GravityDamConfig read_gravity_dam_config(const input::Case& c)
                                     {s.heel_x, s.crest_y, 0.0},
                                     {s.heel_x, s.base_y, 0.0});
   s.water_level = g.seismic.reservoir.level;
+  g.silt.level = c.real("silt.level");
+  g.silt.unit_weight = c.real("silt.unit_weight");
+  g.silt.friction_angle_deg = c.real("silt.friction_angle");
+  if (g.silt.level > g.seismic.reservoir.level)
+    c.fail("silt.level", "is above the reservoir level",
+           "a silt surface below reservoir.level");
+  g.uplift_on = c.boolean("uplift.enabled");
+  if (g.uplift_on && !s.foundation)
+    c.fail("uplift.enabled", "needs a foundation block (on a rigid base the "
+                             "uplift acts on fixed nodes)",
+           "foundation.enabled = true");
+  g.uplift.head_upstream = g.seismic.reservoir.depth();
+  g.uplift.head_downstream = c.real("uplift.tailwater");
+  g.uplift.alpha = c.real("uplift.alpha");
+  g.uplift.x_heel = s.heel_x;
+  g.uplift.x_toe = s.toe_x;
+  const double drain = c.real("uplift.drain_x");
+  g.uplift.x_drain = drain < 0 ? s.heel_x + 0.1 * (s.toe_x - s.heel_x) : drain;
+  if (g.uplift_on && !(g.uplift.x_drain > s.heel_x && g.uplift.x_drain < s.toe_x))
+    c.fail("uplift.drain_x", "is not between the heel and the toe",
+           "heel_x < drain_x < toe_x");
+  if (g.uplift_on && g.uplift.head_downstream > g.uplift.head_upstream)
+    c.fail("uplift.tailwater", "is above the reservoir",
+           "a tailwater below reservoir.level");
   g.seismic.faces = {{"upstream", tags::upstream_face},
                      {"downstream", tags::downstream_face}};
   return g;

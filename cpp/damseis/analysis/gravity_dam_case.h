@@ -6,6 +6,7 @@
 #include "seismic_settings.h"
 #include <damseis/case/case.h>
 #include <damseis/fem/elastic_model.h>
+#include <damseis/fem/gravity_dam_loads.h>
 #include <damseis/geometry/gravity_dam.h>
 
 namespace damseis::analysis
@@ -24,6 +25,13 @@ struct GravityDamConfig
   ConcreteSettings concrete_model;
   /// Run elastic, plastic and viscoplastic and write table1.csv/.md.
   bool table1 = false;
+  /// In the Table 1 study, the viscoplastic run also takes the static E
+  /// (the paper's RCC study: only the rate-independent run gets +30%).
+  bool viscoplastic_static_E = false;
+  /// Silt on the upstream face (level 0: none) and uplift on the base.
+  fem::Silt silt;
+  bool uplift_on = false;
+  fem::Uplift uplift;
 };
 
 /// Ground-motion directions of a 2D section: x horizontal, y vertical.

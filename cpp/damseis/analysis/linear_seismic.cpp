@@ -38,7 +38,8 @@ double seconds_since(Clock::time_point t0)
 
 json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
                         const std::filesystem::path& out_dir,
-                        const std::string& case_text, Mat tie)
+                        const std::string& case_text, Mat tie,
+                        const std::vector<Vec>& extra_static_loads)
 {
   const auto wall_start = Clock::now();
   const auto model = fe.model();
@@ -103,6 +104,8 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     Vector H(fe.assemble_hydrostatic(s.reservoir), false);
     VecAXPY(F_full.vec(), 1.0, H.vec());
   }
+  for (Vec extra : extra_static_loads)
+    VecAXPY(F_full.vec(), 1.0, extra);
   Vector F = system_load(F_full.vec());
   Vector u_static = column_vector(K.mat());
   {

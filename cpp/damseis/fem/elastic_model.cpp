@@ -225,6 +225,23 @@ Vec ElasticModel::assemble_hydrostatic_free(const Reservoir& reservoir) const
                        false);
 }
 
+Vec ElasticModel::assemble_load_form(
+    const ufcx_form& form, const std::map<std::string, double>& values,
+    const std::map<std::string, std::shared_ptr<const Function>>& coefficients)
+    const
+{
+  std::map<std::string, std::shared_ptr<const dfem::Constant<double>>> c;
+  for (const auto& [name, value] : values)
+    c[name] = std::make_shared<const dfem::Constant<double>>(value);
+  const std::map<dfem::IntegralType, const dolfinx::mesh::MeshTags<int>*>
+      subdomains = {
+          {dfem::IntegralType::exterior_facet, _model.facet_tags.get()},
+          {dfem::IntegralType::interior_facet, _model.facet_tags.get()}};
+  auto L = dfem::create_form<double>(form, {_V}, coefficients, c, subdomains,
+                                     _model.mesh);
+  return assemble_load(L, true);
+}
+
 Vec ElasticModel::assemble_internal_force(const Function& u) const
 {
   auto uptr = std::shared_ptr<const Function>(&u, [](const Function*) {});

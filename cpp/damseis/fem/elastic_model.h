@@ -103,6 +103,14 @@ public:
   Vec assemble_gravity(const std::array<double, 3>& g) const;
   /// Hydrostatic load of the reservoir; zero at fixed dofs.
   Vec assemble_hydrostatic(const Reservoir& reservoir) const;
+  /// A load of another compiled linear form on V (e.g.
+  /// forms/gravity_loads_2d.py) with scalar constants by name, integrated
+  /// over the tagged exterior and interior facets; zero at fixed dofs.
+  /// `coefficients`: name -> Function (e.g. a region indicator).
+  Vec assemble_load_form(
+      const ufcx_form& form, const std::map<std::string, double>& constants,
+      const std::map<std::string, std::shared_ptr<const Function>>&
+          coefficients = {}) const;
   /// Internal force f_int(u) = K u without boundary conditions (used for
   /// reactions and residual checks).
   Vec assemble_internal_force(const Function& u) const;
