@@ -72,7 +72,8 @@ TEST(GravityDamLoads, SiltAndUpliftResultants)
       0.5 * (g * h1 + pd) * 7.3 + 0.5 * (pd + g * h2) * (70.0 - 7.3);
   const double uy = component_sum(fu.vec(), 1);
   print_metric(fmt("uplift resultant ", uy, " N/m, closed form ", uplift_ref,
-                   ", relative error ", std::abs(uy - uplift_ref) / uplift_ref));
+                   ", relative error ",
+                   std::abs(uy - uplift_ref) / uplift_ref));
   EXPECT_NEAR(uy, uplift_ref, 1e-3 * uplift_ref);
   EXPECT_NEAR(component_sum(fu.vec(), 0), 0.0, 1e-9 * uplift_ref);
 }

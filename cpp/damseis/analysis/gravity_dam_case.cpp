@@ -63,8 +63,9 @@ input::Schema gravity_dam_schema()
       .above(0);
   s.real("silt.friction_angle", "15", "deg", "internal friction angle of silt")
       .between(0, 45);
-  s.boolean("uplift.enabled", "false", "-",
-            "uplift on the dam base (acts on the dam; with a foundation block)");
+  s.boolean(
+      "uplift.enabled", "false", "-",
+      "uplift on the dam base (acts on the dam; with a foundation block)");
   s.real("uplift.tailwater", "0.0", "m",
          "tailwater level above the base (head at the toe)")
       .at_least(0);
@@ -145,8 +146,9 @@ GravityDamConfig read_gravity_dam_config(const input::Case& c)
            "a silt surface below reservoir.level");
   g.uplift_on = c.boolean("uplift.enabled");
   if (g.uplift_on && !s.foundation)
-    c.fail("uplift.enabled", "needs a foundation block (on a rigid base the "
-                             "uplift acts on fixed nodes)",
+    c.fail("uplift.enabled",
+           "needs a foundation block (on a rigid base the "
+           "uplift acts on fixed nodes)",
            "foundation.enabled = true");
   g.uplift.head_upstream = g.seismic.reservoir.depth();
   g.uplift.head_downstream = c.real("uplift.tailwater");
@@ -155,7 +157,8 @@ GravityDamConfig read_gravity_dam_config(const input::Case& c)
   g.uplift.x_toe = s.toe_x;
   const double drain = c.real("uplift.drain_x");
   g.uplift.x_drain = drain < 0 ? s.heel_x + 0.1 * (s.toe_x - s.heel_x) : drain;
-  if (g.uplift_on && !(g.uplift.x_drain > s.heel_x && g.uplift.x_drain < s.toe_x))
+  if (g.uplift_on &&
+      !(g.uplift.x_drain > s.heel_x && g.uplift.x_drain < s.toe_x))
     c.fail("uplift.drain_x", "is not between the heel and the toe",
            "heel_x < drain_x < toe_x");
   if (g.uplift_on && g.uplift.head_downstream > g.uplift.head_upstream)

@@ -27,12 +27,11 @@ namespace damseis::analysis
 /// (bonded joints): the system is solved for u_r with u = P u_r.
 /// `extra_static_loads` (full-space vectors, zero at fixed dofs: silt,
 /// uplift) are added to the static stage.
-nlohmann::json run_linear_seismic(fem::ElasticModel& fe,
-                                  const SeismicSettings& settings,
-                                  const std::filesystem::path& out_dir,
-                                  const std::string& case_text,
-                                  Mat tie = nullptr,
-                                  const std::vector<Vec>& extra_static_loads = {});
+nlohmann::json
+run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& settings,
+                   const std::filesystem::path& out_dir,
+                   const std::string& case_text, Mat tie = nullptr,
+                   const std::vector<Vec>& extra_static_loads = {});
 
 /// Thrown when a run was stopped by a signal after writing a checkpoint.
 struct Interrupted : std::runtime_error

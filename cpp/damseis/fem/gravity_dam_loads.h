@@ -27,7 +27,7 @@ struct Uplift
   double head_downstream = 0.0; ///< H2 [m]
   double alpha = 0.25;          ///< residual ratio at the drains
   double x_heel = 0.0, x_drain = 0.0, x_toe = 0.0; ///< [m]
-  double gamma_w = 9810.0;                        ///< [N/m3]
+  double gamma_w = 9810.0;                         ///< [N/m3]
 };
 
 /// Load vectors (zero at fixed dofs). 2D models only.
