@@ -45,6 +45,10 @@ void add_concrete_keys(input::Schema& s)
   s.integer("solver.newton_max_iterations", "30", "-",
             "Newton iterations per (sub)step")
       .between(1, 1000);
+  s.integer("solver.newton_stagnation", "5", "-",
+            "give a step up (and cut it) when the residual has not halved "
+            "in this many iterations")
+      .between(1, 1000);
   s.integer("solver.max_cuts", "6", "-",
             "halvings of a step that does not converge")
       .between(0, 12);
@@ -93,6 +97,8 @@ ConcreteSettings read_concrete_settings(const input::Case& c, double E,
   s.newton.max_iterations =
       static_cast<int>(c.integer("solver.newton_max_iterations"));
   s.newton.max_cuts = static_cast<int>(c.integer("solver.max_cuts"));
+  s.newton.stagnation_iterations =
+      static_cast<int>(c.integer("solver.newton_stagnation"));
   s.static_increments = static_cast<int>(c.integer("solver.static_increments"));
   return s;
 }
