@@ -7,7 +7,9 @@ Reads OUT_DIR/crest.csv, OUT_DIR/envelopes.h5 and OUT_DIR/summary.json;
 writes OUT_DIR/crest_history.png and OUT_DIR/envelopes.png. For nonlinear
 concrete runs (OUT_DIR/dam_points.csv) also OUT_DIR/strain_rates.png: the
 maximum strain rate and the final equivalent tensile viscoplastic strain at
-the quadrature points (the paper's Fig. 9).
+the quadrature points (the paper's Fig. 9); and, from
+OUT_DIR/displacement_envelope.csv, displacement_envelope.png (the envelope of
+the horizontal displacement along the upstream face, the paper's Fig. 7).
 """
 import json
 import sys
@@ -111,6 +113,24 @@ def plot_strain_rates(out: Path, summary: dict) -> None:
     plt.close(fig)
 
 
+def plot_displacement_envelope(out: Path, summary: dict) -> None:
+    d = np.genfromtxt(out / "displacement_envelope.csv", delimiter=",",
+                      names=True)
+    fig, ax = plt.subplots(figsize=(5, 7))
+    ax.plot(100 * d["max_m"], d["y_m"], "r-", lw=1.2, label="max (downstream)")
+    ax.plot(100 * d["min_m"], d["y_m"], "b-", lw=1.2, label="min (upstream)")
+    ax.axvline(0.0, color="k", lw=0.5)
+    ax.set_xlabel("horizontal displacement relative to the base [cm]")
+    ax.set_ylabel("elevation [m]")
+    model = summary.get("concrete", {}).get("model", "linear")
+    ax.set_title(f"Envelope along the upstream face ({model})", fontsize=10)
+    ax.grid(alpha=0.3)
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(out / "displacement_envelope.png", dpi=130)
+    plt.close(fig)
+
+
 def main() -> None:
     if len(sys.argv) != 2:
         sys.exit(__doc__)
@@ -118,6 +138,8 @@ def main() -> None:
     summary = json.loads((out / "summary.json").read_text())
     plot_crest(out, summary)
     plot_envelopes(out, summary)
+    if (out / "displacement_envelope.csv").exists():
+        plot_displacement_envelope(out, summary)
     if (out / "dam_points.csv").exists():
         plot_strain_rates(out, summary)
 

@@ -7,6 +7,7 @@
 #include <damseis/fem/modal.h>
 #include <damseis/fem/tied_dofs.h>
 #include <damseis/geometry/tags.h>
+#include <damseis/results/displacement_envelope.h>
 #include <damseis/results/face_points.h>
 #include <damseis/results/field_writer.h>
 #include <damseis/results/point_probe.h>
@@ -19,6 +20,7 @@
 #include <dolfinx/mesh/MeshTags.h>
 #include <fstream>
 #include <functional>
+#include <optional>
 #include <sstream>
 
 namespace damseis::analysis
@@ -194,6 +196,10 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
 
   results::PointProbe crest(*fe.V(), s.crest_point);
   results::PointProbe base(*fe.V(), s.base_point);
+  // 2D: envelope of the horizontal displacement along the upstream face.
+  std::optional<results::DisplacementEnvelope> face_u;
+  if (dim == 2 && !tie)
+    face_u.emplace(*fe.V(), *model.facet_tags, tags::upstream_face);
   const auto crest_static = crest.value_on_all(full(u_static.vec()));
   const auto base_static = base.value_on_all(full(u_static.vec()));
   const int n = s.steps;
@@ -259,6 +265,8 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     envelope.update(std::span<const double>(sa, ns), t);
     Vec uf = full(ud);
     const auto c = crest.value(uf), b = base.value(uf);
+    if (face_u)
+      face_u->update(uf, base.value_on_all(uf)[0], nullptr);
     for (int i = 0; i < dim; ++i)
     {
       hist[2 * dim * k + i] = c[i];
@@ -327,6 +335,8 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
                           false, out_dir / "crest.csv");
 
   results::write_envelopes(fe, envelope, out_dir / "envelopes.xdmf");
+  if (face_u && k0 == 0)
+    face_u->write_csv(comm, out_dir / "displacement_envelope.csv");
   const json faces = write_faces(comm, s, envelope, face_pts, dim, out_dir);
   const auto tension = envelope.max_tension(comm);
   const auto compression = envelope.max_compression(comm);

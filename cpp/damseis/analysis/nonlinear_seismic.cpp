@@ -6,6 +6,7 @@
 #include <cmath>
 #include <damseis/fem/concrete_model.h>
 #include <damseis/geometry/tags.h>
+#include <damseis/results/displacement_envelope.h>
 #include <damseis/results/face_points.h>
 #include <damseis/results/field_writer.h>
 #include <damseis/results/point_probe.h>
@@ -283,6 +284,9 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   results::PointProbe base(*fe.V(), s.base_point);
   const auto crest_static = crest.value_on_all(u_static.vec());
   const auto base_static = base.value_on_all(u_static.vec());
+  // Envelope of the seismic horizontal displacement along the upstream face.
+  results::DisplacementEnvelope face_u(*fe.V(), *model.facet_tags,
+                                       tags::upstream_face);
   const int n = s.steps;
   const double dt = s.scheme.dt;
   std::vector<double> hist(2 * dim * (n + 1), 0.0);
@@ -354,6 +358,9 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     rate_env.update(cm.strain_rate(), t);
     kt_rate_env.update(cm.kappa_t_rate(), t);
     const auto c = crest.value(newmark.u()), b = base.value(newmark.u());
+    face_u.update(newmark.u(),
+                  base.value_on_all(newmark.u())[0] - base_static[0],
+                  u_static.vec());
     for (int i = 0; i < dim; ++i)
     {
       hist[2 * dim * k + i] = c[i];
@@ -456,6 +463,8 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
                             {"max_strain_rate", rate_all},
                             {"max_kappa_t_rate", kt_rate_all}});
   const json faces = write_faces(comm, s, envelope, face_pts, dim, out_dir);
+  if (k0 == 0)
+    face_u.write_csv(comm, out_dir / "displacement_envelope.csv");
   {
     std::vector<double> kt(cm.kappa_t().begin(), cm.kappa_t().begin() + n_pts),
         kc(cm.kappa_c().begin(), cm.kappa_c().begin() + n_pts);
