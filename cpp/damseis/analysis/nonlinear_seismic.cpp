@@ -9,6 +9,7 @@
 #include <damseis/results/displacement_envelope.h>
 #include <damseis/results/face_points.h>
 #include <damseis/results/field_writer.h>
+#include <damseis/results/gather.h>
 #include <damseis/results/point_probe.h>
 #include <damseis/results/principal.h>
 #include <damseis/results/progress.h>
@@ -131,17 +132,9 @@ void write_dam_points(MPI_Comm comm, const results::StressEnvelope& env,
     for (const auto* c : columns)
       local.push_back((*c)[i]);
   }
-  int rank = 0, size = 1;
+  int rank = 0;
   MPI_Comm_rank(comm, &rank);
-  MPI_Comm_size(comm, &size);
-  int n = static_cast<int>(local.size());
-  std::vector<int> counts(size), offsets(size + 1, 0);
-  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
-  for (int r = 0; r < size; ++r)
-    offsets[r + 1] = offsets[r] + counts[r];
-  std::vector<double> all(rank == 0 ? offsets[size] : 0);
-  MPI_Gatherv(local.data(), n, MPI_DOUBLE, all.data(), counts.data(),
-              offsets.data(), MPI_DOUBLE, 0, comm);
+  const std::vector<double> all = results::gather_to_root(comm, local);
   if (rank != 0)
     return;
   std::ofstream csv(file);

@@ -2,6 +2,7 @@
 #include <chrono>
 #include <cmath>
 #include <csignal>
+#include <damseis/results/gather.h>
 #include <dolfinx/io/XDMFFile.h>
 #include <dolfinx/mesh/MeshTags.h>
 #include <fstream>
@@ -164,17 +165,9 @@ void write_face_csv(MPI_Comm comm, const results::StressEnvelope& env,
                   env.max_times()[p], env.min_principal()[p] * 1e-6,
                   env.min_times()[p]});
   }
-  int rank = 0, size = 1;
+  int rank = 0;
   MPI_Comm_rank(comm, &rank);
-  MPI_Comm_size(comm, &size);
-  int n = static_cast<int>(local.size());
-  std::vector<int> counts(size), offsets(size + 1, 0);
-  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
-  for (int r = 0; r < size; ++r)
-    offsets[r + 1] = offsets[r] + counts[r];
-  std::vector<double> all(rank == 0 ? offsets[size] : 0);
-  MPI_Gatherv(local.data(), n, MPI_DOUBLE, all.data(), counts.data(),
-              offsets.data(), MPI_DOUBLE, 0, comm);
+  const std::vector<double> all = results::gather_to_root(comm, local);
   if (rank != 0)
     return;
   std::ofstream csv(file);

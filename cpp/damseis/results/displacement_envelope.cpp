@@ -1,4 +1,5 @@
 #include "displacement_envelope.h"
+#include "gather.h"
 #include <algorithm>
 #include <dolfinx/common/IndexMap.h>
 #include <dolfinx/fem/DirichletBC.h>
@@ -62,17 +63,9 @@ void DisplacementEnvelope::write_csv(MPI_Comm comm,
   std::vector<double> local;
   for (std::size_t i = 0; i < _nodes.size(); ++i)
     local.insert(local.end(), {_x[i], _y[i], _max[i], _min[i]});
-  int rank = 0, size = 1;
+  int rank = 0;
   MPI_Comm_rank(comm, &rank);
-  MPI_Comm_size(comm, &size);
-  int n = static_cast<int>(local.size());
-  std::vector<int> counts(size), offsets(size + 1, 0);
-  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
-  for (int p = 0; p < size; ++p)
-    offsets[p + 1] = offsets[p] + counts[p];
-  std::vector<double> all(rank == 0 ? offsets[size] : 0);
-  MPI_Gatherv(local.data(), n, MPI_DOUBLE, all.data(), counts.data(),
-              offsets.data(), MPI_DOUBLE, 0, comm);
+  const std::vector<double> all = gather_to_root(comm, local);
   if (rank != 0)
     return;
   std::vector<std::size_t> order(all.size() / 4);
