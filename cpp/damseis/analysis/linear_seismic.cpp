@@ -31,11 +31,6 @@ using dolfinx::la::petsc::Matrix;
 using dolfinx::la::petsc::Vector;
 using nlohmann::json;
 using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0)
-{
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 } // namespace
 
 json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
@@ -135,42 +130,15 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   const ModalResult modal =
       modal_and_damping(K.mat(), M.mat(), added ? M0.mat() : nullptr, s);
   const fem::Modes& modes = modal.modes;
-  const double modal_seconds = modal.seconds;
-  const double f1 = modal.f1, f2 = modal.f2;
-  const auto damping = modal.damping;
-  std::ostringstream freqs;
-  for (double f : modes.frequencies_hz)
-    freqs << " " << std::round(f * 1000) / 1000;
-  results::print(comm, "natural frequencies [Hz]:" + freqs.str());
 
   // Dynamic stage: displacement relative to the base under the ground
   // acceleration, M a + C v + K u = -M sum_c r_c a_gc(t). The added mass
   // multiplies the total acceleration, so it is part of M here.
-  dynamics::LinearNewmark newmark(M.mat(), K.mat(), damping, s.scheme,
+  dynamics::LinearNewmark newmark(M.mat(), K.mat(), modal.damping, s.scheme,
                                   s.factorization);
-  std::vector<int> active;
-  std::vector<Vector> influence, load;
-  for (int c = 0; c < dim; ++c)
-  {
-    if (!s.motion[c].active)
-      continue;
-    active.push_back(c);
-    Vector r(fe.influence(c), false);
-    if (tie)
-      influence.emplace_back(fem::restrict_to_tied(tie, r.vec()), false);
-    else
-      influence.push_back(std::move(r));
-    load.push_back(column_vector(K.mat()));
-    MatMult(M.mat(), influence.back().vec(), load.back().vec());
-    VecScale(load.back().vec(), -1.0);
-  }
+  const GroundMotionLoad ground(fe, s, M.mat(), tie);
   Vector f = column_vector(K.mat());
-  auto set_load = [&](int k)
-  {
-    VecSet(f.vec(), 0.0);
-    for (std::size_t i = 0; i < active.size(); ++i)
-      VecAXPY(f.vec(), s.motion[active[i]].acceleration[k], load[i].vec());
-  };
+  auto set_load = [&](int k) { ground.assemble(k, nullptr, f.vec()); };
 
   // Outputs: every input check has passed by now.
   std::filesystem::create_directories(out_dir);
@@ -236,11 +204,7 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   else
   {
     Vector zero = column_vector(K.mat()), a0 = column_vector(K.mat());
-    for (std::size_t i = 0; i < active.size(); ++i)
-    {
-      VecAXPY(a0.vec(), -s.motion[active[i]].acceleration[0],
-              influence[i].vec());
-    }
+    ground.initial_acceleration(a0.vec());
     set_load(0);
     newmark.set_state(zero.vec(), zero.vec(), a0.vec(), f.vec());
   }
@@ -313,18 +277,7 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     newmark.step(f.vec());
     record_state(k, k * dt, newmark.u());
     progress.report(k - k0, k * dt);
-    const bool any_stop = signals.requested(comm, k == s.stop_at_step);
-    if (any_stop ||
-        (s.checkpoint_every > 0 && k % s.checkpoint_every == 0 && k < n))
-    {
-      checkpoint(k);
-    }
-    if (any_stop)
-    {
-      throw Interrupted("stopped at step " + std::to_string(k) +
-                        "; checkpoint written to " + ckpt_dir.string() +
-                        "; resume with --set run.restart=true");
-    }
+    signals.checkpoint_or_stop(comm, s, k, n, checkpoint, ckpt_dir);
   }
   const double loop_seconds = seconds_since(loop_start);
   results::reduce_history(comm, hist);
@@ -338,59 +291,14 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   if (face_u && k0 == 0)
     face_u->write_csv(comm, out_dir / "displacement_envelope.csv");
   const json faces = write_faces(comm, s, envelope, face_pts, dim, out_dir);
-  const auto tension = envelope.max_tension(comm);
-  const auto compression = envelope.max_compression(comm);
-
-  const char* axis = "xyz";
-  json motion = json::object();
-  for (int i = 0; i < dim; ++i)
-  {
-    motion[std::string(1, axis[i])] = {
-        {"record", s.motion[i].record},
-        {"peak_g", s.motion[i].active ? s.motion[i].peak_g : 0.0}};
-  }
-  json summary = {
-      {"n_cells", n_cells},
-      {"n_dofs", n_dofs},
-      {"mesh_order", fe.degree()},
-      {"steps", n},
-      {"dt_s", dt},
-      {"frequencies_hz", modes.frequencies_hz},
-      {"frequencies_dry_hz", modal.dry_hz},
-      {"added_mass", added != nullptr},
-      {"damping",
-       {{"ratio", s.damping_ratio},
-        {"f1_hz", f1},
-        {"f2_hz", f2},
-        {"a_mass", damping.a_mass},
-        {"b_stiffness", damping.b_stiffness}}},
-      {"stress", s.stress_total ? "total" : "seismic"},
-      {"crest_point",
-       std::vector<double>(crest.node().begin(), crest.node().begin() + dim)},
-      {"max_principal_tension_mpa", extreme_json(tension, dim)},
-      {"max_principal_compression_mpa", extreme_json(compression, dim)},
-      {"faces", faces},
-      {"ground_motion", motion},
-      {"solver", newmark.solver().name()},
-      {"setup_and_static_seconds", static_seconds},
-      {"modal_seconds", modal_seconds},
-      {"factorization_seconds", newmark.solver().factor_seconds()},
-      {"time_loop_seconds", loop_seconds},
-      {"seconds_per_step", loop_seconds / std::max(1, n - k0)},
-      {"restarted_from_step", k0},
-      {"mpi_ranks", ranks},
-  };
+  json summary =
+      seismic_summary(comm, fe, s, modal, added != nullptr, crest.node(),
+                      envelope, faces, newmark.solver().name(),
+                      {static_seconds, modal.seconds,
+                       newmark.solver().factor_seconds(), loop_seconds, k0});
   summary.update(crest_summary);
   summary["wall_seconds"] = seconds_since(wall_start);
-  results::print(
-      comm,
-      "max tension " + std::to_string(tension.value * 1e-6) +
-          " MPa, max compression " + std::to_string(compression.value * 1e-6) +
-          " MPa, max crest displacement " +
-          std::to_string(
-              crest_summary["crest_displacement_max_m"]["value"].get<double>() *
-              100) +
-          " cm");
+  print_summary_line(comm, summary);
   return summary;
 }
 } // namespace damseis::analysis

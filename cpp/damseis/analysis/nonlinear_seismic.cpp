@@ -31,11 +31,6 @@ using dolfinx::la::petsc::Vector;
 using nlohmann::json;
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point t0)
-{
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
 /// The concrete model seen by the integrators (PETSc vectors in, material
 /// update through a ghosted Function).
 class ConcreteSystem : public dynamics::NonlinearSystem
@@ -219,34 +214,14 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     M0 = Matrix(fe.assemble_mass(nullptr), false);
   const ModalResult modal =
       modal_and_damping(K.mat(), M.mat(), added ? M0.mat() : nullptr, s);
-  std::ostringstream freqs;
-  for (double f : modal.modes.frequencies_hz)
-    freqs << " " << std::round(f * 1000) / 1000;
-  results::print(comm, "natural frequencies [Hz]:" + freqs.str());
 
   // Dynamic stage: M a + C v + f_int(u) = F_static - M sum_c r_c a_gc(t),
   // u relative to the base, total (static included).
   dynamics::NonlinearNewmark newmark(M.mat(), K.mat(), modal.damping, s.scheme,
                                      system, concrete.newton, s.factorization);
-  std::vector<int> active;
-  std::vector<Vector> influence, load;
-  for (int c = 0; c < dim; ++c)
-  {
-    if (!s.motion[c].active)
-      continue;
-    active.push_back(c);
-    influence.emplace_back(fe.influence(c), false);
-    load.push_back(column_vector(K.mat()));
-    MatMult(M.mat(), influence.back().vec(), load.back().vec());
-    VecScale(load.back().vec(), -1.0);
-  }
+  const GroundMotionLoad ground(fe, s, M.mat());
   Vector f = column_vector(K.mat());
-  auto set_load = [&](int k)
-  {
-    VecCopy(F_static.vec(), f.vec());
-    for (std::size_t i = 0; i < active.size(); ++i)
-      VecAXPY(f.vec(), s.motion[active[i]].acceleration[k], load[i].vec());
-  };
+  auto set_load = [&](int k) { ground.assemble(k, F_static.vec(), f.vec()); };
 
   std::filesystem::create_directories(out_dir);
   if (rank == 0)
@@ -320,11 +295,7 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   else
   {
     Vector v0 = column_vector(K.mat()), a0 = column_vector(K.mat());
-    for (std::size_t i = 0; i < active.size(); ++i)
-    {
-      VecAXPY(a0.vec(), -s.motion[active[i]].acceleration[0],
-              influence[i].vec());
-    }
+    ground.initial_acceleration(a0.vec());
     set_load(0);
     newmark.set_state(u_static.vec(), v0.vec(), a0.vec(), f.vec(), fint0.vec());
   }
@@ -427,16 +398,7 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
             (rep.cuts ? ", " + std::to_string(rep.cuts) + " cuts"
                       : std::string()) +
             ", inelastic points " + std::to_string(system.accepted.inelastic));
-    const bool stop = signals.requested(comm, k == s.stop_at_step);
-    if (stop ||
-        (s.checkpoint_every > 0 && k % s.checkpoint_every == 0 && k < n))
-      checkpoint(k);
-    if (stop)
-    {
-      throw Interrupted("stopped at step " + std::to_string(k) +
-                        "; checkpoint written to " + ckpt_dir.string() +
-                        "; resume with --set run.restart=true");
-    }
+    signals.checkpoint_or_stop(comm, s, k, n, checkpoint, ckpt_dir);
   }
   const double loop_seconds = seconds_since(loop_start);
   results::reduce_history(comm, hist);
@@ -465,95 +427,50 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
                      {&kt, &kc, &rate_env.max, &rate_env.t, &kt_rate_env.max},
                      out_dir / "dam_points.csv");
   }
-  const auto tension = envelope.max_tension(comm);
-  const auto compression = envelope.max_compression(comm);
   ScalarEnvelope kt_final(n_pts);
   kt_final.update(cm.kappa_t(), n * dt);
   const auto kt_max = scalar_extreme(comm, kt_final, cm.coordinates(), in_dam);
   const auto rate_max =
       scalar_extreme(comm, rate_env, cm.coordinates(), in_dam);
 
-  const char* axis = "xyz";
-  json motion = json::object();
-  for (int i = 0; i < dim; ++i)
-  {
-    motion[std::string(1, axis[i])] = {
-        {"record", s.motion[i].record},
-        {"peak_g", s.motion[i].active ? s.motion[i].peak_g : 0.0}};
-  }
   const int steps_run = std::max(1, n - k0);
   const auto& p = concrete.params;
-  json summary = {
-      {"n_cells", n_cells},
-      {"n_dofs", n_dofs},
-      {"mesh_order", fe.degree()},
-      {"steps", n},
-      {"dt_s", dt},
-      {"frequencies_hz", modal.modes.frequencies_hz},
-      {"frequencies_dry_hz", modal.dry_hz},
-      {"added_mass", added != nullptr},
-      {"damping",
-       {{"ratio", s.damping_ratio},
-        {"f1_hz", modal.f1},
-        {"f2_hz", modal.f2},
-        {"a_mass", modal.damping.a_mass},
-        {"b_stiffness", modal.damping.b_stiffness}}},
-      {"stress", s.stress_total ? "total" : "seismic"},
-      {"crest_point",
-       std::vector<double>(crest.node().begin(), crest.node().begin() + dim)},
-      {"max_principal_tension_mpa", extreme_json(tension, dim)},
-      {"max_principal_compression_mpa", extreme_json(compression, dim)},
-      {"faces", faces},
-      {"ground_motion", motion},
-      {"concrete",
-       {{"model", to_string(concrete.kind)},
-        {"E_pa", p.E},
-        {"fc_mpa", p.fc0 * 1e-6},
-        {"ft_mpa", p.ft0 * 1e-6},
-        {"Gf_n_per_m", p.Gf},
-        {"dynamic_factor_E", concrete.factor_E},
-        {"dynamic_factor_strength", concrete.factor_strength},
-        {"material_bins", cm.material_count()},
-        {"cells_with_reduced_tensile_strength",
-         cm.cells_with_reduced_strength()}}},
-      {"max_kappa_t",
-       {{"value", kt_max.value}, {"x", kt_max.x[0]}, {"y", kt_max.x[1]}}},
-      {"max_strain_rate_per_s",
-       {{"value", rate_max.value},
-        {"x", rate_max.x[0]},
-        {"y", rate_max.x[1]},
-        {"t", rate_max.t}}},
-      {"newton",
-       {{"rtol", concrete.newton.rtol},
-        {"static_iterations", static_g.iterations + static_r.iterations},
-        {"static_cuts", static_g.cuts + static_r.cuts},
-        {"iterations", stats[0]},
-        {"iterations_per_step", stats[0] / steps_run},
-        {"max_iterations_in_a_step", stats[3]},
-        {"tangent_factorizations", stats[1]},
-        {"step_cuts", stats[2]},
-        {"max_inelastic_points", stats[4]}}},
-      {"solver", newmark.solver().name()},
-      {"setup_and_static_seconds", static_seconds},
-      {"modal_seconds", modal.seconds},
-      {"factorization_seconds", newmark.solver().factor_seconds()},
-      {"time_loop_seconds", loop_seconds},
-      {"seconds_per_step", loop_seconds / steps_run},
-      {"restarted_from_step", k0},
-      {"mpi_ranks", ranks},
-  };
+  json summary =
+      seismic_summary(comm, fe, s, modal, added != nullptr, crest.node(),
+                      envelope, faces, newmark.solver().name(),
+                      {static_seconds, modal.seconds,
+                       newmark.solver().factor_seconds(), loop_seconds, k0});
   summary.update(crest_summary);
+  summary["concrete"] = {{"model", to_string(concrete.kind)},
+                         {"E_pa", p.E},
+                         {"fc_mpa", p.fc0 * 1e-6},
+                         {"ft_mpa", p.ft0 * 1e-6},
+                         {"Gf_n_per_m", p.Gf},
+                         {"dynamic_factor_E", concrete.factor_E},
+                         {"dynamic_factor_strength", concrete.factor_strength},
+                         {"material_bins", cm.material_count()},
+                         {"cells_with_reduced_tensile_strength",
+                          cm.cells_with_reduced_strength()}};
+  summary["max_kappa_t"] = {
+      {"value", kt_max.value}, {"x", kt_max.x[0]}, {"y", kt_max.x[1]}};
+  summary["max_strain_rate_per_s"] = {{"value", rate_max.value},
+                                      {"x", rate_max.x[0]},
+                                      {"y", rate_max.x[1]},
+                                      {"t", rate_max.t}};
+  summary["newton"] = {
+      {"rtol", concrete.newton.rtol},
+      {"static_iterations", static_g.iterations + static_r.iterations},
+      {"static_cuts", static_g.cuts + static_r.cuts},
+      {"iterations", stats[0]},
+      {"iterations_per_step", stats[0] / steps_run},
+      {"max_iterations_in_a_step", stats[3]},
+      {"tangent_factorizations", stats[1]},
+      {"step_cuts", stats[2]},
+      {"max_inelastic_points", stats[4]}};
   summary["wall_seconds"] = seconds_since(wall_start);
-  results::print(
-      comm,
-      "max tension " + std::to_string(tension.value * 1e-6) +
-          " MPa, max compression " + std::to_string(compression.value * 1e-6) +
-          " MPa, max crest displacement " +
-          std::to_string(
-              crest_summary["crest_displacement_max_m"]["value"].get<double>() *
-              100) +
-          " cm, Newton iterations per step " +
-          std::to_string(stats[0] / steps_run));
+  print_summary_line(comm, summary,
+                     ", Newton iterations per step " +
+                         std::to_string(stats[0] / steps_run));
   return summary;
 }
 } // namespace damseis::analysis

@@ -1,9 +1,14 @@
 #include "run_support.h"
+#include "linear_seismic.h"
 #include <chrono>
 #include <cmath>
 #include <csignal>
+#include <damseis/fem/tied_dofs.h>
 #include <damseis/results/gather.h>
+#include <damseis/results/progress.h>
+#include <dolfinx/common/IndexMap.h>
 #include <dolfinx/io/XDMFFile.h>
+#include <dolfinx/mesh/Mesh.h>
 #include <dolfinx/mesh/MeshTags.h>
 #include <fstream>
 #include <sstream>
@@ -81,6 +86,51 @@ std::vector<std::int32_t> region_cells(const geometry::Model& m, int region)
   return cells;
 }
 
+double seconds_since(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
+      .count();
+}
+
+GroundMotionLoad::GroundMotionLoad(const fem::ElasticModel& fe,
+                                   const SeismicSettings& s, Mat M, Mat tie)
+    : _s(s)
+{
+  for (int c = 0; c < fe.dim(); ++c)
+  {
+    if (!s.motion[c].active)
+      continue;
+    _active.push_back(c);
+    Vector r(fe.influence(c), false);
+    if (tie)
+      _influence.emplace_back(fem::restrict_to_tied(tie, r.vec()), false);
+    else
+      _influence.push_back(std::move(r));
+    _load.push_back(column_vector(M));
+    MatMult(M, _influence.back().vec(), _load.back().vec());
+    VecScale(_load.back().vec(), -1.0);
+  }
+}
+
+void GroundMotionLoad::assemble(int k, Vec base, Vec f) const
+{
+  if (base)
+    VecCopy(base, f);
+  else
+    VecSet(f, 0.0);
+  for (std::size_t i = 0; i < _active.size(); ++i)
+    VecAXPY(f, _s.motion[_active[i]].acceleration[k], _load[i].vec());
+}
+
+void GroundMotionLoad::initial_acceleration(Vec a) const
+{
+  VecSet(a, 0.0);
+  for (std::size_t i = 0; i < _active.size(); ++i)
+  {
+    VecAXPY(a, -_s.motion[_active[i]].acceleration[0], _influence[i].vec());
+  }
+}
+
 namespace
 {
 volatile std::sig_atomic_t stop_requested = 0;
@@ -110,6 +160,22 @@ bool StopSignals::requested(MPI_Comm comm, bool forced) const
   return any != 0;
 }
 
+void StopSignals::checkpoint_or_stop(
+    MPI_Comm comm, const SeismicSettings& s, int k, int n,
+    const std::function<void(int)>& checkpoint,
+    const std::filesystem::path& ckpt_dir) const
+{
+  const bool stop = requested(comm, k == s.stop_at_step);
+  if (stop || (s.checkpoint_every > 0 && k % s.checkpoint_every == 0 && k < n))
+    checkpoint(k);
+  if (stop)
+  {
+    throw Interrupted("stopped at step " + std::to_string(k) +
+                      "; checkpoint written to " + ckpt_dir.string() +
+                      "; resume with --set run.restart=true");
+  }
+}
+
 ModalResult modal_and_damping(Mat K, Mat M, Mat M_dry, const SeismicSettings& s)
 {
   const auto t0 = std::chrono::steady_clock::now();
@@ -117,9 +183,7 @@ ModalResult modal_and_damping(Mat K, Mat M, Mat M_dry, const SeismicSettings& s)
   r.modes = fem::solve_modes(K, M, s.modes);
   r.dry_hz = M_dry ? fem::solve_modes(K, M_dry, s.modes).frequencies_hz
                    : r.modes.frequencies_hz;
-  r.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
-          .count();
+  r.seconds = seconds_since(t0);
   if (s.damping_frequencies_hz.size() == 2)
   {
     r.f1 = s.damping_frequencies_hz[0];
@@ -132,6 +196,11 @@ ModalResult modal_and_damping(Mat K, Mat M, Mat M_dry, const SeismicSettings& s)
   }
   r.damping =
       dynamics::RayleighDamping::from_ratio(s.damping_ratio, r.f1, r.f2);
+  std::ostringstream freqs;
+  for (double f : r.modes.frequencies_hz)
+    freqs << " " << std::round(f * 1000) / 1000;
+  results::print(PetscObjectComm(reinterpret_cast<PetscObject>(K)),
+                 "natural frequencies [Hz]:" + freqs.str());
   return r;
 }
 
@@ -252,6 +321,77 @@ json write_crest_history(MPI_Comm comm, const std::vector<double>& hist,
   return {{"crest_static_m", statics},
           {"crest_displacement_max_m", {{"value", peak_h}, {"t", peak_h_t}}},
           {"crest_displacement_max_by_component_m", by_component}};
+}
+
+json seismic_summary(MPI_Comm comm, const fem::ElasticModel& fe,
+                     const SeismicSettings& s, const ModalResult& modal,
+                     bool added_mass, const std::array<double, 3>& crest_node,
+                     const results::StressEnvelope& envelope, const json& faces,
+                     const std::string& solver, const RunTimes& t)
+{
+  const int dim = fe.dim();
+  int ranks = 1;
+  MPI_Comm_size(comm, &ranks);
+  const char* axis = "xyz";
+  json motion = json::object();
+  for (int i = 0; i < dim; ++i)
+  {
+    motion[std::string(1, axis[i])] = {
+        {"record", s.motion[i].record},
+        {"peak_g", s.motion[i].active ? s.motion[i].peak_g : 0.0}};
+  }
+  const int steps_run = std::max(1, s.steps - t.restarted_from_step);
+  return {
+      {"n_cells", fe.mesh()->topology().index_map(dim)->size_global()},
+      {"n_dofs", fe.V()->dofmap()->index_map->size_global() * dim},
+      {"mesh_order", fe.degree()},
+      {"steps", s.steps},
+      {"dt_s", s.scheme.dt},
+      {"frequencies_hz", modal.modes.frequencies_hz},
+      {"frequencies_dry_hz", modal.dry_hz},
+      {"added_mass", added_mass},
+      {"damping",
+       {{"ratio", s.damping_ratio},
+        {"f1_hz", modal.f1},
+        {"f2_hz", modal.f2},
+        {"a_mass", modal.damping.a_mass},
+        {"b_stiffness", modal.damping.b_stiffness}}},
+      {"stress", s.stress_total ? "total" : "seismic"},
+      {"crest_point",
+       std::vector<double>(crest_node.begin(), crest_node.begin() + dim)},
+      {"max_principal_tension_mpa",
+       extreme_json(envelope.max_tension(comm), dim)},
+      {"max_principal_compression_mpa",
+       extreme_json(envelope.max_compression(comm), dim)},
+      {"faces", faces},
+      {"ground_motion", motion},
+      {"solver", solver},
+      {"setup_and_static_seconds", t.setup_and_static},
+      {"modal_seconds", t.modal},
+      {"factorization_seconds", t.factorization},
+      {"time_loop_seconds", t.loop},
+      {"seconds_per_step", t.loop / steps_run},
+      {"restarted_from_step", t.restarted_from_step},
+      {"mpi_ranks", ranks},
+  };
+}
+
+void print_summary_line(MPI_Comm comm, const json& summary,
+                        const std::string& extra)
+{
+  results::print(
+      comm,
+      "max tension " +
+          std::to_string(
+              summary["max_principal_tension_mpa"]["value"].get<double>()) +
+          " MPa, max compression " +
+          std::to_string(
+              summary["max_principal_compression_mpa"]["value"].get<double>()) +
+          " MPa, max crest displacement " +
+          std::to_string(
+              summary["crest_displacement_max_m"]["value"].get<double>() *
+              100) +
+          " cm" + extra);
 }
 
 json write_faces(MPI_Comm comm, const SeismicSettings& s,

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "seismic_settings.h"
+#include <chrono>
 #include <damseis/fem/elastic_model.h>
 #include <damseis/fem/modal.h>
 #include <damseis/results/stress_envelope.h>
@@ -29,6 +30,31 @@ nlohmann::json extreme_json(const results::Extreme& e, int dim);
 /// Local cells (owned and ghost) of a region tag.
 std::vector<std::int32_t> region_cells(const geometry::Model& m, int region);
 
+/// Wall seconds since t0.
+double seconds_since(std::chrono::steady_clock::time_point t0);
+
+/// The ground-acceleration load of the relative formulation,
+/// f(t_k) = base - M sum_c r_c a_gc(t_k), for the active components of the
+/// settings; with `tie` the influence vectors are restricted to the tied
+/// unknowns (M is then the reduced mass).
+class GroundMotionLoad
+{
+public:
+  GroundMotionLoad(const fem::ElasticModel& fe, const SeismicSettings& s, Mat M,
+                   Mat tie = nullptr);
+  /// f = base (or 0 if base is null) + the ground-motion load at step k.
+  void assemble(int k, Vec base, Vec f) const;
+  /// The acceleration at rest under the ground motion at t = 0,
+  /// a = -sum_c r_c a_gc(0): it satisfies M a = f(0) also where M is
+  /// singular (massless foundation, fixed dofs).
+  void initial_acceleration(Vec a) const;
+
+private:
+  const SeismicSettings& _s;
+  std::vector<int> _active;
+  std::vector<dolfinx::la::petsc::Vector> _influence, _load;
+};
+
 /// SIGINT/SIGTERM request a stop while an instance lives (the previous
 /// handlers come back on destruction).
 class StopSignals
@@ -38,6 +64,12 @@ public:
   ~StopSignals();
   /// True on every rank if any rank got a signal or `forced`; collective.
   bool requested(MPI_Comm comm, bool forced) const;
+  /// After step k of n: calls checkpoint(k) every s.checkpoint_every steps
+  /// (not at the last) and on a stop request (a signal or
+  /// s.stop_at_step), then throws Interrupted on a stop. Collective.
+  void checkpoint_or_stop(MPI_Comm comm, const SeismicSettings& s, int k, int n,
+                          const std::function<void(int)>& checkpoint,
+                          const std::filesystem::path& ckpt_dir) const;
 
 private:
   void (*_old_int)(int);
@@ -45,7 +77,7 @@ private:
 };
 
 /// Modal analysis (with the added mass in M, and dry if `M_dry`) and the
-/// Rayleigh damping of the settings.
+/// Rayleigh damping of the settings; prints the frequencies (rank 0).
 struct ModalResult
 {
   fem::Modes modes;
@@ -82,6 +114,29 @@ nlohmann::json write_crest_history(MPI_Comm comm,
                                    const std::array<double, 3>& base_static,
                                    bool history_is_total,
                                    const std::filesystem::path& file);
+
+/// Timings of a run [s] and the step it restarted from.
+struct RunTimes
+{
+  double setup_and_static = 0.0, modal = 0.0, factorization = 0.0, loop = 0.0;
+  int restarted_from_step = 0;
+};
+
+/// summary.json entries common to the seismic engines: model size, modes,
+/// damping, ground motion, crest point, stress extremes (from `envelope`),
+/// faces, solver and timings. Collective (the stress extremes).
+nlohmann::json seismic_summary(MPI_Comm comm, const fem::ElasticModel& fe,
+                               const SeismicSettings& s,
+                               const ModalResult& modal, bool added_mass,
+                               const std::array<double, 3>& crest_node,
+                               const results::StressEnvelope& envelope,
+                               const nlohmann::json& faces,
+                               const std::string& solver, const RunTimes& t);
+
+/// The closing line of a run (rank 0): stress extremes and crest peak of a
+/// summary, then `extra`.
+void print_summary_line(MPI_Comm comm, const nlohmann::json& summary,
+                        const std::string& extra = "");
 
 /// Per-face envelope tables (face_<name>.csv) and summary entries.
 nlohmann::json write_faces(MPI_Comm comm, const SeismicSettings& s,
