@@ -216,6 +216,14 @@ inline Model box_model(MPI_Comm comm, Point lo, Point hi,
   return model_from_mesh(mesh, facet_tag);
 }
 
+/// Euclidean norm of a vector (collective).
+inline double norm2(Vec x)
+{
+  double n = 0;
+  VecNorm(x, NORM_2, &n);
+  return n;
+}
+
 /// Number of owned entries (unrolled) of a space's vectors.
 inline std::int32_t owned_size(const dolfinx::fem::FunctionSpace& V)
 {

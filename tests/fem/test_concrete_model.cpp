@@ -12,6 +12,7 @@
 // Koyna section, 8 m mesh, rigid base; plane stress and plane strain.
 #include "fem_test_support.h"
 
+#include <damseis/analysis/run_support.h>
 #include <damseis/fem/concrete_model.h>
 #include <damseis/geometry/gravity_dam.h>
 
@@ -70,23 +71,7 @@ PVec loading(ElasticModel& fe, double scale)
   return u;
 }
 
-void set_function(Vec x, Function& u)
-{
-  const double* a = nullptr;
-  VecGetArrayRead(x, &a);
-  PetscInt n = 0;
-  VecGetLocalSize(x, &n);
-  std::copy_n(a, n, u.x()->mutable_array().begin());
-  VecRestoreArrayRead(x, &a);
-  u.x()->scatter_fwd();
-}
-
-double norm(Vec x)
-{
-  double n = 0;
-  VecNorm(x, NORM_2, &n);
-  return n;
-}
+using damseis::analysis::to_function;
 
 TEST(ConcreteModel, ElasticModeReproducesLinearStiffness)
 {
@@ -104,7 +89,7 @@ TEST(ConcreteModel, ElasticModeReproducesLinearStiffness)
 
     PVec u = loading(*s.fe, 14.0);
     Function uf(s.fe->V());
-    set_function(u.vec(), uf);
+    to_function(u.vec(), uf);
     s.cm->update(uf, 0.01);
     PVec f = own(s.fe->assemble_gravity({0, 0, 0}));
     s.cm->assemble_internal_force(f.vec());
@@ -112,8 +97,8 @@ TEST(ConcreteModel, ElasticModeReproducesLinearStiffness)
     MatMult(K.mat(), u.vec(), Ku.vec());
     // K has identity rows at the fixed dofs, where u = 0 and f = 0.
     VecAXPY(f.vec(), -1.0, Ku.vec());
-    print_metric(fmt("f_int - K u: ", norm(f.vec()) / norm(Ku.vec())));
-    EXPECT_LT(norm(f.vec()) / norm(Ku.vec()), 1e-11);
+    print_metric(fmt("f_int - K u: ", norm2(f.vec()) / norm2(Ku.vec())));
+    EXPECT_LT(norm2(f.vec()) / norm2(Ku.vec()), 1e-11);
   }
 }
 
@@ -129,7 +114,7 @@ TEST(ConcreteModel, TangentMatchesFiniteDifferenceOfInternalForce)
       // smaller one (their local solve from zero is the harder one).
       PVec u = loading(*s.fe, mode == material::Mode::plastic ? 14.0 : 9.0);
       Function uf(s.fe->V());
-      set_function(u.vec(), uf);
+      to_function(u.vec(), uf);
       const double dt = 0.01;
       const auto stats = s.cm->update(uf, dt);
       ASSERT_EQ(stats.failed, 0);
@@ -138,7 +123,7 @@ TEST(ConcreteModel, TangentMatchesFiniteDifferenceOfInternalForce)
 
       // Direction: a different smooth field of similar size.
       PVec d = loading(*s.fe, -2.0);
-      VecScale(d.vec(), 1.0 / norm(d.vec()) * norm(u.vec()));
+      VecScale(d.vec(), 1.0 / norm2(d.vec()) * norm2(u.vec()));
       PVec Kd = own(s.fe->assemble_gravity({0, 0, 0}));
       MatMult(Kt.mat(), d.vec(), Kd.vec());
       double worst = 1e300;
@@ -148,18 +133,18 @@ TEST(ConcreteModel, TangentMatchesFiniteDifferenceOfInternalForce)
         PVec fm = own(s.fe->assemble_gravity({0, 0, 0}));
         PVec up = own(s.fe->assemble_gravity({0, 0, 0}));
         VecWAXPY(up.vec(), h, d.vec(), u.vec());
-        set_function(up.vec(), uf);
+        to_function(up.vec(), uf);
         ASSERT_EQ(s.cm->update(uf, dt).failed, 0);
         s.cm->assemble_internal_force(fp.vec());
         VecWAXPY(up.vec(), -h, d.vec(), u.vec());
-        set_function(up.vec(), uf);
+        to_function(up.vec(), uf);
         ASSERT_EQ(s.cm->update(uf, dt).failed, 0);
         s.cm->assemble_internal_force(fm.vec());
         VecAXPY(fp.vec(), -1.0, fm.vec());
         VecScale(fp.vec(), 0.5 / h);
         // Fixed rows: identity in Kt, zero in f_int, and d = 0 there.
         VecAXPY(fp.vec(), -1.0, Kd.vec());
-        const double err = norm(fp.vec()) / norm(Kd.vec());
+        const double err = norm2(fp.vec()) / norm2(Kd.vec());
         print_metric(
             fmt(mode == material::Mode::plastic ? "plastic" : "viscoplastic",
                 plane == PlaneMode::plane_stress ? " plane stress"

@@ -16,8 +16,10 @@
 //     Newmark images) step by step to the solver tolerance (1e-9 relative).
 #include "fem_test_support.h"
 
+#include <damseis/analysis/concrete_system.h>
 #include <damseis/analysis/linear_seismic.h>
 #include <damseis/analysis/nonlinear_seismic.h>
+#include <damseis/analysis/run_support.h>
 #include <damseis/dynamics/newmark.h>
 #include <damseis/dynamics/nonlinear_newmark.h>
 #include <damseis/fem/concrete_model.h>
@@ -37,44 +39,9 @@ namespace material = damseis::material;
 namespace dynamics = damseis::dynamics;
 using Function = dolfinx::fem::Function<double>;
 
-void set_function(Vec x, Function& u)
-{
-  const double* a = nullptr;
-  VecGetArrayRead(x, &a);
-  PetscInt n = 0;
-  VecGetLocalSize(x, &n);
-  std::copy_n(a, n, u.x()->mutable_array().begin());
-  VecRestoreArrayRead(x, &a);
-  u.x()->scatter_fwd();
-}
+using damseis::analysis::to_function;
 
-double norm(Vec x)
-{
-  double n = 0;
-  VecNorm(x, NORM_2, &n);
-  return n;
-}
-
-/// The concrete model seen by the integrators.
-class System : public dynamics::NonlinearSystem
-{
-public:
-  System(ConcreteModel& m, ElasticModel& fe) : _m(m), _u(fe.V()) {}
-  bool trial(Vec u, double dt) override
-  {
-    set_function(u, _u);
-    last = _m.update(_u, dt);
-    return last.failed == 0;
-  }
-  void internal_force(Vec f) override { _m.assemble_internal_force(f); }
-  void tangent(Mat A) override { _m.assemble_tangent(A); }
-  void accept() override { _m.accept(); }
-  damseis::fem::MaterialUpdateStats last;
-
-private:
-  ConcreteModel& _m;
-  Function _u;
-};
+using damseis::analysis::ConcreteSystem;
 
 TEST(ConcreteStructure, NewtonConvergesQuadratically)
 {
@@ -93,7 +60,7 @@ TEST(ConcreteStructure, NewtonConvergesQuadratically)
   p.mode = material::Mode::plastic;
   ConcreteModel cm(fe, {{tags::dam, p}}, {{tags::dam, concrete}},
                    PlaneMode::plane_strain);
-  System system(cm, fe);
+  ConcreteSystem system(cm);
   PMat K = own(fe.assemble_stiffness());
   PVec F = own(fe.assemble_gravity({7.0, -9.81, 0}));
   PVec zero = own(fe.assemble_gravity({0, 0, 0}));
@@ -255,12 +222,12 @@ double bar_energy_ratio(int nx, int degree)
     bool ok = false;
     for (int it = 0; it < 40 && !ok; ++it)
     {
-      set_function(u.vec(), uf);
+      to_function(u.vec(), uf);
       const auto st = cm.update(uf, 0.0);
       EXPECT_EQ(st.failed, 0) << "d / peak = " << d / peak << ", iteration "
                               << it << ", inelastic " << st.inelastic;
       cm.assemble_internal_force(R.vec());
-      if (norm(R.vec()) <= 1e-9 * ft * H)
+      if (norm2(R.vec()) <= 1e-9 * ft * H)
       {
         ok = true;
         break;

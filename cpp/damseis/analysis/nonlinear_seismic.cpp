@@ -1,5 +1,6 @@
 #include "nonlinear_seismic.h"
 #include "checkpoint.h"
+#include "concrete_system.h"
 #include "linear_seismic.h"
 #include "run_support.h"
 #include <chrono>
@@ -30,35 +31,6 @@ using dolfinx::la::petsc::Matrix;
 using dolfinx::la::petsc::Vector;
 using nlohmann::json;
 using Clock = std::chrono::steady_clock;
-
-/// The concrete model seen by the integrators (PETSc vectors in, material
-/// update through a ghosted Function).
-class ConcreteSystem : public dynamics::NonlinearSystem
-{
-public:
-  explicit ConcreteSystem(fem::ConcreteModel& m)
-      : _m(m), _u(m.elastic_model().V())
-  {
-  }
-  bool trial(Vec u, double dt) override
-  {
-    to_function(u, _u);
-    last = _m.update(_u, dt);
-    return last.failed == 0;
-  }
-  void internal_force(Vec f) override { _m.assemble_internal_force(f); }
-  void tangent(Mat A) override { _m.assemble_tangent(A); }
-  void accept() override
-  {
-    _m.accept();
-    accepted = last;
-  }
-  fem::MaterialUpdateStats last, accepted;
-
-private:
-  fem::ConcreteModel& _m;
-  dolfinx::fem::Function<double> _u;
-};
 
 /// Per owned point of the stress space, the maximum over time of a scalar
 /// and when it occurred.

@@ -1,0 +1,40 @@
+// The nonlinear concrete model as the integrators see it
+// (dynamics::NonlinearSystem): PETSc vectors in, the material update through
+// a ghosted Function, the counts of the last trial and of the last accepted
+// state.
+#pragma once
+
+#include "run_support.h"
+#include <damseis/dynamics/nonlinear_newmark.h>
+#include <damseis/fem/concrete_model.h>
+
+namespace damseis::analysis
+{
+class ConcreteSystem : public dynamics::NonlinearSystem
+{
+public:
+  explicit ConcreteSystem(fem::ConcreteModel& m)
+      : _m(m), _u(m.elastic_model().V())
+  {
+  }
+  bool trial(Vec u, double dt) override
+  {
+    to_function(u, _u);
+    last = _m.update(_u, dt);
+    return last.failed == 0;
+  }
+  void internal_force(Vec f) override { _m.assemble_internal_force(f); }
+  void tangent(Mat A) override { _m.assemble_tangent(A); }
+  void accept() override
+  {
+    _m.accept();
+    accepted = last;
+  }
+  fem::MaterialUpdateStats last;     ///< of the last trial
+  fem::MaterialUpdateStats accepted; ///< of the last accepted trial
+
+private:
+  fem::ConcreteModel& _m;
+  dolfinx::fem::Function<double> _u;
+};
+} // namespace damseis::analysis
