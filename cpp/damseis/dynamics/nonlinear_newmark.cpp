@@ -412,8 +412,9 @@ bool NonlinearNewmark::solve_step(double dt, Vec f_next, int level,
   {
     return false;
   }
-  // Accept: the kinematics and internal force of the converged trial.
-  kinematics(_ut);
+  // Accept: newton() returns true right after evaluating the residual at
+  // the converged _ut, so _vt, _at, _fint_t and the system's trial state
+  // belong to it.
   VecCopy(_ut, _u);
   VecCopy(_vt, _v);
   VecCopy(_at, _a);

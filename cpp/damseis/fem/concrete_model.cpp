@@ -59,6 +59,10 @@ ConcreteModel::ConcreteModel(
   _sig = std::make_shared<dfem::Function<double>>(_Sq);
   _Ct = std::make_shared<dfem::Function<double>>(_Cq);
   _u = std::make_shared<dfem::Function<double>>(fe.V());
+  _f_work = dolfinx::la::petsc::Vector(
+      dolfinx::la::petsc::create_vector(*fe.V()->dofmap()->index_map,
+                                        fe.V()->dofmap()->index_map_bs()),
+      false);
   auto V = fe.V();
   _L = std::make_shared<dfem::Form<double>>(dfem::create_form<double>(
       *_forms.L_residual, {V}, {{"sig", _sig}}, {}, {}, mesh));
@@ -75,8 +79,8 @@ ConcreteModel::ConcreteModel(
 
   // Point coordinates (and the point -> dof map).
   {
-    std::vector<std::int32_t> cells(_num_cells);
-    std::iota(cells.begin(), cells.end(), 0);
+    _cells.resize(_num_cells);
+    std::iota(_cells.begin(), _cells.end(), 0);
     auto position = dfem::create_expression<double>(
         *_forms.position,
         std::map<std::string, std::shared_ptr<const dfem::Function<double>>>{},
@@ -84,7 +88,7 @@ ConcreteModel::ConcreteModel(
         mesh);
     std::vector<double> xq(np * 2);
     RowMajor view{xq.data(), static_cast<std::size_t>(_nq) * 2};
-    position.eval(std::span<const std::int32_t>(cells), view);
+    position.eval(std::span<const std::int32_t>(_cells), view);
     const auto& dm = *_Sq->dofmap();
     const std::int32_t ndofs =
         dm.index_map->size_local() + dm.index_map->num_ghosts();
@@ -181,18 +185,7 @@ ConcreteModel::ConcreteModel(
     const auto D = _dynamic[_cell_material[c]]->elastic_tangent();
     for (int q = 0; q < _nq; ++q)
     {
-      const std::int32_t dof = _dof_c[static_cast<std::size_t>(c) * _nq + q];
-      for (int i = 0; i < 3; ++i)
-      {
-        for (int j = 0; j < 3; ++j)
-        {
-          double v = D[plane_index[i] * 6 + plane_index[j]];
-          if (_plane == PlaneMode::plane_stress)
-            v -= D[plane_index[i] * 6 + 2] * D[2 * 6 + plane_index[j]] /
-                 D[2 * 6 + 2];
-          ct[dof * 9 + i * 3 + j] = v;
-        }
-      }
+      condense(D, &ct[9 * _dof_c[static_cast<std::size_t>(c) * _nq + q]]);
     }
   }
 }
@@ -255,7 +248,12 @@ material::Update ConcreteModel::integrate_point(
   {
     up.tangent = m.elastic_tangent();
   }
-  const auto& T = up.tangent;
+  condense(up.tangent, ct);
+  return up;
+}
+
+void ConcreteModel::condense(const material::Matrix6& T, double* ct) const
+{
   for (int i = 0; i < 3; ++i)
   {
     for (int j = 0; j < 3; ++j)
@@ -267,7 +265,6 @@ material::Update ConcreteModel::integrate_point(
       ct[i * 3 + j] = v;
     }
   }
-  return up;
 }
 
 MaterialUpdateStats ConcreteModel::update(const dfem::Function<double>& u,
@@ -275,10 +272,8 @@ MaterialUpdateStats ConcreteModel::update(const dfem::Function<double>& u,
 {
   std::copy(u.x()->array().begin(), u.x()->array().end(),
             _u->x()->mutable_array().begin());
-  std::vector<std::int32_t> cells(_num_cells);
-  std::iota(cells.begin(), cells.end(), 0);
   RowMajor view{_strain_values.data(), static_cast<std::size_t>(_nq) * 3};
-  _strain->eval(std::span<const std::int32_t>(cells), view);
+  _strain->eval(std::span<const std::int32_t>(_cells), view);
 
   std::span<double> sig = _sig->x()->mutable_array();
   std::span<double> ct = _Ct->x()->mutable_array();
@@ -365,9 +360,7 @@ void ConcreteModel::accept()
 
 void ConcreteModel::assemble_internal_force(Vec f, bool apply_bc) const
 {
-  auto V = _fe.V();
-  const auto& map = *V->dofmap()->index_map;
-  Vec b = dolfinx::la::petsc::create_vector(map, V->dofmap()->index_map_bs());
+  Vec b = _f_work.vec();
   VecSet(b, 0.0);
   dfem::petsc::assemble_vector(b, *_L);
   VecGhostUpdateBegin(b, ADD_VALUES, SCATTER_REVERSE);
@@ -384,7 +377,6 @@ void ConcreteModel::assemble_internal_force(Vec f, bool apply_bc) const
   std::copy_n(src, n, dst);
   VecRestoreArray(f, &dst);
   VecRestoreArrayRead(b, &src);
-  VecDestroy(&b);
 }
 
 Mat ConcreteModel::assemble_tangent() const

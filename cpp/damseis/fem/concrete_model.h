@@ -7,6 +7,7 @@
 #include "elastic_model.h"
 #include <damseis/material/concrete.h>
 #include <dolfinx/fem/Expression.h>
+#include <dolfinx/la/petsc.h>
 #include <map>
 #include <memory>
 #include <span>
@@ -99,6 +100,9 @@ public:
   std::int64_t cells_with_reduced_strength() const { return _reduced_cells; }
 
 private:
+  /// The in-plane 3x3 tangent (xx, yy, xy) of a 6x6 one into ct (plane
+  /// stress: sigma_zz = 0 condensed out).
+  void condense(const material::Matrix6& T, double* ct) const;
   /// One point: old state and total strain (Voigt 6) -> new state; the
   /// condensed 3x3 tangent into `ct`. Returns the update.
   material::Update integrate_point(const material::HtcConcrete& m,
@@ -115,6 +119,9 @@ private:
   std::int32_t _num_cells = 0, _num_owned_cells = 0;
   std::shared_ptr<dolfinx::fem::FunctionSpace> _Sq, _Cq;
   std::shared_ptr<dolfinx::fem::Function<double>> _sig, _Ct, _u;
+  std::vector<std::int32_t> _cells; ///< all local cells (owned, ghost)
+  /// Ghosted work vector of the internal force assembly.
+  dolfinx::la::petsc::Vector _f_work{nullptr, false};
   std::shared_ptr<dolfinx::fem::Form<double>> _L, _a;
   std::unique_ptr<dolfinx::fem::Expression<double>> _strain;
   std::vector<std::unique_ptr<material::HtcConcrete>> _dynamic, _static;
