@@ -360,8 +360,12 @@ void ConcreteModel::accept()
 
 void ConcreteModel::assemble_internal_force(Vec f, bool apply_bc) const
 {
-  Vec b = _f_work.vec();
-  VecSet(b, 0.0);
+  // Zero the owned and the ghost entries (VecSet alone leaves the ghosts,
+  // which the reverse scatter would add again).
+  Vec b = _f_work.vec(), b_local;
+  VecGhostGetLocalForm(b, &b_local);
+  VecSet(b_local, 0.0);
+  VecGhostRestoreLocalForm(b, &b_local);
   dfem::petsc::assemble_vector(b, *_L);
   VecGhostUpdateBegin(b, ADD_VALUES, SCATTER_REVERSE);
   VecGhostUpdateEnd(b, ADD_VALUES, SCATTER_REVERSE);
