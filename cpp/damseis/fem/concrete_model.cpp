@@ -248,6 +248,19 @@ material::Update ConcreteModel::integrate_point(
   {
     up.tangent = m.elastic_tangent();
   }
+  // Plane stress: the condensation divides by the out-of-plane slope
+  // d sigma_zz / d eps_zz, which vanishes where the point is perfectly
+  // plastic along zz (exactly 0 at some corners: an infinite tangent, and
+  // the global matrix has no factorisation and GMRES breaks down). Where
+  // |slope| < 1e-6 of the elastic one the elastic slope is used, as the
+  // local sigma_zz = 0 iteration does: a modified tangent at that point
+  // only; the global residual still decides convergence.
+  if (_plane == PlaneMode::plane_stress)
+  {
+    const double e22 = m.elastic_tangent()[2 * 6 + 2];
+    if (!(std::abs(up.tangent[2 * 6 + 2]) >= 1e-6 * e22))
+      up.tangent[2 * 6 + 2] = e22;
+  }
   condense(up.tangent, ct);
   return up;
 }
