@@ -52,6 +52,13 @@ void add_concrete_keys(input::Schema& s)
   s.integer("solver.max_cuts", "6", "-",
             "halvings of a step that does not converge")
       .between(0, 12);
+  s.real("solver.krylov_rtol", "1e-2", "-",
+         "GMRES tolerance of a Newton direction, relative to the residual")
+      .between_exclusive(0.0, 1.0);
+  s.integer("solver.krylov_max_iterations", "60", "-",
+            "GMRES iterations on reused factors before the tangent is "
+            "factorised; 0 factorises every tangent (exact Newton)")
+      .between(0, 1000);
   s.integer("solver.static_increments", "5", "-",
             "load increments of the reservoir in the static stage")
       .between(1, 1000);
@@ -99,6 +106,9 @@ ConcreteSettings read_concrete_settings(const input::Case& c, double E,
   s.newton.max_cuts = static_cast<int>(c.integer("solver.max_cuts"));
   s.newton.stagnation_iterations =
       static_cast<int>(c.integer("solver.newton_stagnation"));
+  s.newton.krylov_rtol = c.real("solver.krylov_rtol");
+  s.newton.krylov_max_iterations =
+      static_cast<int>(c.integer("solver.krylov_max_iterations"));
   s.static_increments = static_cast<int>(c.integer("solver.static_increments"));
   return s;
 }

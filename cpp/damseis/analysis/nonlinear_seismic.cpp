@@ -231,7 +231,11 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   const double dt = s.scheme.dt;
   std::vector<double> hist(2 * dim * (n + 1), 0.0);
   // Newton statistics: iterations, tangents, cuts (sums), max iterations.
-  std::vector<double> stats = {0, 0, 0, 0, 0};
+  // Newton statistics of the time history (checkpointed): iterations,
+  // tangent factorisations, cuts, max iterations in a step, max inelastic
+  // points, GMRES iterations, seconds in residuals, tangent assembly,
+  // factorisations and direction solves.
+  std::vector<double> stats(10, 0.0);
 
   int k0 = 0;
   const std::filesystem::path ckpt_dir = out_dir / "checkpoint";
@@ -261,6 +265,7 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     kt_rate_env.t = restart->arrays.at("kt_rate_t");
     hist = restart->arrays.at("history");
     stats = restart->arrays.at("newton");
+    stats.resize(10, 0.0);
     results::print(comm, "restarting from the checkpoint at step " +
                              std::to_string(k0));
   }
@@ -359,6 +364,11 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     stats[2] += rep.cuts;
     stats[3] = std::max(stats[3], double(rep.iterations));
     stats[4] = std::max(stats[4], double(system.accepted.inelastic));
+    stats[5] += rep.krylov_iterations;
+    stats[6] += rep.seconds_residual;
+    stats[7] += rep.seconds_tangent;
+    stats[8] += rep.seconds_factorization;
+    stats[9] += rep.seconds_solve;
     record_state(k, k * dt);
     progress.report(
         k - k0, k * dt,
@@ -437,6 +447,12 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
       {"iterations_per_step", stats[0] / steps_run},
       {"max_iterations_in_a_step", stats[3]},
       {"tangent_factorizations", stats[1]},
+      {"krylov_iterations", stats[5]},
+      {"seconds",
+       {{"residual", stats[6]},
+        {"tangent_assembly", stats[7]},
+        {"factorization", stats[8]},
+        {"direction_solves", stats[9]}}},
       {"step_cuts", stats[2]},
       {"max_inelastic_points", stats[4]}};
   summary["wall_seconds"] = seconds_since(wall_start);

@@ -1,5 +1,6 @@
 #include "nonlinear_newmark.h"
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -18,19 +19,35 @@ double norm(Vec x)
   return n;
 }
 
-/// Newton iteration on u for R(u) = 0 with a factorised initial matrix and,
-/// when that converges too slowly, the consistent matrix assembled into J.
-/// `residual` evaluates the trial state and R (false: material failure).
-/// On success u holds the solution and the system's trial state matches it.
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t0)
+{
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
 const bool trace = std::getenv("DAMSEIS_NEWTON_TRACE") != nullptr;
 
+/// Newton iteration on u for R(u) = 0. `residual` evaluates the trial state
+/// and R (false: material failure); `jacobian` assembles the consistent
+/// matrix of the last trial into J. Directions: the factorised initial
+/// matrix while the trial is elastic (exact then), else the tangent solved
+/// by `tangent` (GMRES on reused factors, or a new factorisation); backed
+/// by the initial matrix's direction if the tangent's finds no decrease.
+/// On success u holds the solution and the system's trial state matches it.
 bool newton(const std::function<bool(Vec, Vec)>& residual,
             const std::function<void(Mat)>& jacobian,
-            const fem::DirectSolver& initial, Mat J,
-            fem::DirectSolver& tangent_solver, double reference, Vec u, Vec R,
-            Vec du, const NewtonSettings& s, StepReport& report)
+            const NonlinearSystem& system, const fem::DirectSolver& initial,
+            int level, Mat J, TangentSolver& tangent, double reference, Vec u,
+            Vec R, Vec du, const NewtonSettings& s, StepReport& report)
 {
-  if (!residual(u, R))
+  auto evaluate = [&](Vec x, Vec r)
+  {
+    const auto t0 = Clock::now();
+    const bool ok = residual(x, r);
+    report.seconds_residual += since(t0);
+    return ok;
+  };
+  if (!evaluate(u, R))
   {
     if (trace)
       std::fprintf(stderr, "newton: material failure at the predictor\n");
@@ -39,9 +56,11 @@ bool newton(const std::function<bool(Vec, Vec)>& residual,
   Vec u0, R0;
   VecDuplicate(u, &u0);
   VecDuplicate(R, &R0);
-  double r = norm(R), r_prev = r;
+  double r = norm(R);
   const double tol = s.rtol * reference;
-  bool use_tangent = false, converged = false;
+  if (trace)
+    std::fprintf(stderr, "newton: it 0  |R|/|F| %.3e\n", r / reference);
+  bool converged = false;
   // Non-monotone line search (Grippo, Lampariello & Lucidi 1986): a trial is
   // accepted if it decreases the largest of the last 4 residual norms, so
   // that full Newton steps through active-set changes are not cut back.
@@ -53,11 +72,6 @@ bool newton(const std::function<bool(Vec, Vec)>& residual,
     report.residual = r / reference;
     if (s.monitor)
       s.monitor(it, r / reference);
-    if (trace)
-    {
-      std::fprintf(stderr, "newton: it %d  |R|/|F| %.3e%s\n", it, r / reference,
-                   use_tangent ? "  (tangent)" : "");
-    }
     if (r <= tol)
     {
       converged = true;
@@ -76,46 +90,52 @@ bool newton(const std::function<bool(Vec, Vec)>& residual,
     {
       break;
     }
-    if (!use_tangent && it > 0 &&
-        (r > s.slow_ratio * r_prev || it >= s.modified_iterations))
-    {
-      use_tangent = true;
-    }
-    // Direction: the consistent tangent if in use, else the initial
-    // matrix; backtracking on ||R|| (a rejected trial includes material
-    // points whose return map failed). If the tangent direction finds no
-    // decrease, the initial matrix's direction is tried.
     VecCopy(u, u0);
     VecCopy(R, R0);
     bool accepted = false;
-    for (int pass = use_tangent ? 0 : 1; pass < 2 && !accepted; ++pass)
+    // pass 0: the tangent (skipped while the trial is elastic); pass 1: the
+    // initial matrix.
+    for (int pass = system.tangent_is_initial() ? 1 : 0; pass < 2 && !accepted;
+         ++pass)
     {
+      std::string how = "initial matrix";
       if (pass == 0)
       {
+        auto t0 = Clock::now();
         jacobian(J);
-        ++report.tangent_factorizations;
-        try
+        report.seconds_tangent += since(t0);
+        t0 = Clock::now();
+        const Direction d = tangent.solve(J, initial, level, R0, du, 0.1 * tol);
+        report.seconds_factorization += tangent.last_factor_seconds();
+        report.seconds_solve += since(t0) - tangent.last_factor_seconds();
+        report.krylov_iterations += tangent.last_krylov_iterations();
+        if (d == Direction::factorized)
+          ++report.tangent_factorizations;
+        how = "tangent, " + std::to_string(tangent.last_krylov_iterations()) +
+              " GMRES" +
+              (d == Direction::factorized ? " + factorised"
+               : d == Direction::failed   ? " + singular"
+                                          : "");
+        if (d == Direction::failed)
         {
-          tangent_solver.factorize_lu(J);
-          tangent_solver.solve(R0, du);
-        }
-        catch (const std::runtime_error& e)
-        {
-          // A (numerically) singular tangent: use the initial matrix.
           if (trace)
-            std::fprintf(stderr, "newton:   tangent failed: %s\n", e.what());
+            std::fprintf(stderr, "newton:   %s\n", how.c_str());
           continue;
         }
       }
       else
+      {
+        const auto t0 = Clock::now();
         initial.solve(R0, du);
+        report.seconds_solve += since(t0);
+      }
       double dn = 0.0;
       VecNorm(du, NORM_2, &dn);
       if (!std::isfinite(dn))
       {
         if (trace)
-          std::fprintf(stderr, "newton:   non-finite direction (pass %d)\n",
-                       pass);
+          std::fprintf(stderr, "newton:   non-finite direction (%s)\n",
+                       how.c_str());
         continue;
       }
       double eta = 1.0;
@@ -123,22 +143,28 @@ bool newton(const std::function<bool(Vec, Vec)>& residual,
       for (int ls = 0; ls < 6; ++ls)
       {
         VecWAXPY(u, -eta, du, u0);
-        const bool ok = residual(u, R);
+        const bool ok = evaluate(u, R);
         const double rt = ok ? norm(R) : INFINITY;
         if (ok && rt <= (1.0 - 1e-4 * eta) * r_ref)
         {
           accepted = true;
-          r_prev = r;
           r = rt;
           recent.push_back(r);
           if (recent.size() > 4)
             recent.erase(recent.begin());
+          if (trace)
+          {
+            std::fprintf(stderr,
+                         "newton: it %d  |R|/|F| %.3e  (%s, eta %.3g)\n",
+                         it + 1, r / reference, how.c_str(), eta);
+          }
           break;
         }
         if (trace)
         {
-          std::fprintf(stderr, "newton:   line search eta %.3g rejected (%s)\n",
-                       eta, ok ? "no decrease" : "material failure");
+          std::fprintf(stderr, "newton:   %s: eta %.3g rejected (%s)\n",
+                       how.c_str(), eta,
+                       ok ? "no decrease" : "material failure");
         }
         eta *= 0.35;
       }
@@ -160,8 +186,9 @@ StepReport solve_static(NonlinearSystem& system, Mat K0, Vec F_from, Vec F_to,
   MPI_Comm comm;
   PetscObjectGetComm(reinterpret_cast<PetscObject>(K0), &comm);
   // The tangent may be indefinite (softening): MUMPS' LU pivots.
-  fem::DirectSolver initial(comm, factorization),
-      tangent_solver(comm, fem::Factorization::mumps);
+  fem::DirectSolver initial(comm, factorization);
+  TangentSolver tangent_solver(comm, settings.krylov_rtol,
+                               settings.krylov_max_iterations);
   initial.factorize(K0);
   Mat J;
   MatDuplicate(K0, MAT_DO_NOT_COPY_VALUES, &J);
@@ -192,8 +219,8 @@ StepReport solve_static(NonlinearSystem& system, Mat K0, Vec F_from, Vec F_to,
     VecAXPBYPCZ(F, 1.0 - target, target, 0.0, F_from, F_to);
     const double reference = std::max(norm(F), norm(F_to));
     VecCopy(u, ut);
-    if (newton(residual, jacobian, initial, J, tangent_solver, reference, ut, R,
-               du, settings, report))
+    if (newton(residual, jacobian, system, initial, 0, J, tangent_solver,
+               reference, ut, R, du, settings, report))
     {
       system.accept();
       VecCopy(ut, u);
@@ -240,10 +267,8 @@ NonlinearNewmark::NonlinearNewmark(Mat M, Mat K0, RayleighDamping damping,
   }
   MPI_Comm comm;
   PetscObjectGetComm(reinterpret_cast<PetscObject>(K0), &comm);
-  // The consistent tangent of a softening material is indefinite: MUMPS'
-  // LU pivots (PETSc's own LU on 2x2 blocks does not).
-  _tangent_solver =
-      std::make_unique<fem::DirectSolver>(comm, fem::Factorization::mumps);
+  _tangent_solver = std::make_unique<TangentSolver>(
+      comm, settings.krylov_rtol, settings.krylov_max_iterations);
   StepReport dummy;
   initial_solver(0, dummy);
 }
@@ -289,7 +314,10 @@ const fem::DirectSolver& NonlinearNewmark::initial_solver(int level,
   auto solver = std::make_unique<fem::DirectSolver>(comm, _factorization);
   solver->factorize(J0);
   if (level > 0)
+  {
     ++report.initial_factorizations;
+    report.seconds_factorization += solver->factor_seconds();
+  }
   auto& entry = _initial[level];
   entry.first = J0;
   entry.second = std::move(solver);
@@ -407,8 +435,8 @@ bool NonlinearNewmark::solve_step(double dt, Vec f_next, int level,
   };
 
   VecCopy(_u, _ut); // predictor: u' = u
-  if (!newton(residual, jacobian, J0, _J, *_tangent_solver, reference, _ut, _r,
-              _du, _settings, report))
+  if (!newton(residual, jacobian, _system, J0, level, _J, *_tangent_solver,
+              reference, _ut, _r, _du, _settings, report))
   {
     return false;
   }

@@ -4,15 +4,18 @@
 // 6.1-6.2), and the quasi-static solution of f_int(u) = F in load
 // increments (the static stage, 6.4).
 //
-// Matrix strategy: the initial (elastic) effective matrix is factorised once
-// and used first (modified Newton); when the residual does not fall fast
-// enough, the consistent tangent of the material is assembled and
-// factorised (full Newton) for the rest of the step. A step that still does
-// not converge is cut in halves (recursively); a step that cannot be solved
-// even then throws StepFailure: an unconverged step is never accepted.
+// Matrix strategy: the initial (elastic) effective matrix J0 is factorised
+// once. While every material point of the trial is elastic, J0 is the exact
+// Jacobian and gives the direction. Otherwise the consistent tangent J is
+// assembled and J du = R solved by GMRES preconditioned with factors already
+// made (J0, or the last factorised tangent); J is factorised only when GMRES
+// would need too many iterations (TangentSolver). A step that does not
+// converge is cut in halves (recursively); a step that cannot be solved even
+// then throws StepFailure: an unconverged step is never accepted.
 #pragma once
 
 #include "newmark.h"
+#include "tangent_solver.h"
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -29,9 +32,14 @@ struct NewtonSettings
   /// Give up a (sub)step (and cut it) when the residual has not halved in
   /// this many iterations.
   int stagnation_iterations = 5;
-  int modified_iterations = 4; ///< at most this many with the initial matrix
-  double slow_ratio = 0.25;    ///< switch to the tangent if ||R|| falls less
-  int max_cuts = 6;            ///< halvings of a step (dt / 64)
+  int max_cuts = 6; ///< halvings of a step (dt / 64)
+  /// GMRES tolerance for the Newton direction, relative to ||R|| (an
+  /// inexact Newton method: the residual falls by about this factor per
+  /// iteration where the tangent is accurate).
+  double krylov_rtol = 1e-2;
+  /// GMRES iterations before the tangent is factorised instead; 0: always
+  /// factorise (exact Newton).
+  int krylov_max_iterations = 60;
   /// Called after every residual evaluation of an accepted iterate with the
   /// iteration number and ||R|| / ||F_ext|| (tests, logging).
   std::function<void(int, double)> monitor;
@@ -53,6 +61,9 @@ public:
   virtual void tangent(Mat A) = 0;
   /// The last trial becomes the committed state.
   virtual void accept() = 0;
+  /// True if the tangent of the last trial is the initial stiffness K0
+  /// (every point elastic): then the factorised initial matrix is exact.
+  virtual bool tangent_is_initial() const { return false; }
 };
 
 /// Work of one (possibly cut) step.
@@ -60,9 +71,14 @@ struct StepReport
 {
   int iterations = 0;             ///< Newton iterations (all sub-steps)
   int tangent_factorizations = 0; ///< consistent tangents factorised
+  int krylov_iterations = 0;      ///< GMRES iterations on the tangent
   int initial_factorizations = 0; ///< effective matrices for cut steps
   int cuts = 0;                   ///< sub-steps beyond the first
   double residual = 0.0;          ///< final ||R|| / ||F_ext||
+  // Wall time [s] by part: material update and residual assembly, tangent
+  // assembly, factorisations, direction solves (GMRES or triangular).
+  double seconds_residual = 0.0, seconds_tangent = 0.0,
+         seconds_factorization = 0.0, seconds_solve = 0.0;
 };
 
 /// Thrown when a step cannot be solved even after the allowed cuts.
@@ -122,7 +138,7 @@ private:
   fem::Factorization _factorization;
   std::map<int, std::pair<Mat, std::unique_ptr<fem::DirectSolver>>> _initial;
   Mat _J = nullptr; ///< consistent effective matrix
-  std::unique_ptr<fem::DirectSolver> _tangent_solver;
+  std::unique_ptr<TangentSolver> _tangent_solver;
   Vec _u = nullptr, _v = nullptr, _a = nullptr, _f = nullptr, _fint = nullptr;
   // Work vectors.
   Vec _ut = nullptr, _vt = nullptr, _at = nullptr, _fint_t = nullptr,

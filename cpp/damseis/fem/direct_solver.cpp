@@ -58,6 +58,16 @@ void DirectSolver::create_ksp(MPI_Comm comm)
   }
 }
 
+void DirectSolver::set_up(Mat A)
+{
+  // The factors are those of A now: later changes of A's values (a tangent
+  // reassembled in place) must not refactorise behind the caller's back.
+  KSPSetReusePreconditioner(_ksp, PETSC_FALSE);
+  KSPSetOperators(_ksp, A, A);
+  KSPSetUp(_ksp);
+  KSPSetReusePreconditioner(_ksp, PETSC_TRUE);
+}
+
 DirectSolver::~DirectSolver()
 {
   if (_ksp)
@@ -88,8 +98,7 @@ void DirectSolver::factorize_lu(Mat A)
   if (_kind != Factorization::mumps)
     PCFactorSetMatOrderingType(pc, MATORDERINGND);
   MatSetOption(A, MAT_SYMMETRIC, PETSC_FALSE);
-  KSPSetOperators(_ksp, A, A);
-  KSPSetUp(_ksp);
+  set_up(A);
   _lu = true;
   // A failed factorisation (e.g. a numerically singular matrix) is an
   // exception here, before any solve uses the factors.
@@ -173,8 +182,7 @@ void DirectSolver::factorize(Mat A)
   MPI_Comm_size(PetscObjectComm(reinterpret_cast<PetscObject>(F)), &size);
   if (!(blocked && F == A && size > 1))
     MatSetOption(F, MAT_SPD, PETSC_TRUE);
-  KSPSetOperators(_ksp, F, F);
-  KSPSetUp(_ksp);
+  set_up(F);
   _factor_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
           .count();

@@ -42,7 +42,8 @@ public:
   /// Throws std::runtime_error if the factorisation fails (then solve()
   /// throws until the next successful factorisation).
   void factorize_lu(Mat A);
-  /// Solves A x = b with the stored factors.
+  /// Solves A x = b with the stored factors (those of A when it was
+  /// factorised, even if A has changed since).
   void solve(Vec b, Vec x) const;
   /// Name of the factorisation used, e.g. "petsc-cholesky-nd".
   std::string name() const;
@@ -52,6 +53,8 @@ public:
 private:
   /// (Re)creates the KSP with the settings of the constructor.
   void create_ksp(MPI_Comm comm);
+  /// Factorises A in the KSP; the factors stay until the next call.
+  void set_up(Mat A);
   KSP _ksp = nullptr;
   Mat _converted = nullptr; ///< A in the storage the package needs
   Factorization _kind;
