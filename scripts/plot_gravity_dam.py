@@ -9,7 +9,8 @@ concrete runs (OUT_DIR/dam_points.csv) also OUT_DIR/strain_rates.png: the
 maximum strain rate and the final equivalent tensile viscoplastic strain at
 the quadrature points (the paper's Fig. 9); and, from
 OUT_DIR/displacement_envelope.csv, displacement_envelope.png (the envelope of
-the horizontal displacement along the upstream face, the paper's Fig. 7).
+the horizontal displacement along the upstream face, the paper's Fig. 7),
+and vertical_stress.png (envelopes of sigma_yy, the paper's Fig. 8).
 """
 import json
 import sys
@@ -113,6 +114,38 @@ def plot_strain_rates(out: Path, summary: dict) -> None:
     plt.close(fig)
 
 
+def plot_vertical_stress(out: Path, summary: dict) -> None:
+    """Envelopes of the vertical stress sigma_yy at the quadrature points
+    (the paper's Fig. 8): largest (tension) and smallest (compression)."""
+    d = np.genfromtxt(out / "dam_points.csv", delimiter=",", names=True)
+    if "max_syy_mpa" not in d.dtype.names:
+        return
+    fig, axes = plt.subplots(1, 2, figsize=(11, 6.5))
+    panels = (("max_syy_mpa", "max_vertical_stress_mpa", "Largest"),
+              ("min_syy_mpa", "min_vertical_stress_mpa", "Smallest"))
+    for ax, (col, key, word) in zip(axes, panels):
+        v = d[col]
+        lim = max(abs(v).max(), 1e-9)
+        sc = ax.scatter(d["x_m"], d["y_m"], c=v, s=4, cmap="RdBu_r",
+                        vmin=-lim, vmax=lim)
+        fig.colorbar(sc, ax=ax, shrink=0.8,
+                     label="vertical stress [MPa] (tension +)")
+        e = summary.get(key)
+        title = f"{word} vertical stress"
+        if e:
+            ax.plot([e["x"]], [e["y"]], "k*", ms=9)
+            title += f" ({e['value']:.2f} MPa at t = {e['t']:.2f} s)"
+        ax.set_title(title, fontsize=10)
+        ax.set_aspect("equal")
+        ax.set_xlabel("x [m]")
+        ax.set_ylabel("y [m]")
+    model = summary.get("concrete", {}).get("model", "")
+    fig.suptitle(f"Envelope of the vertical stress, concrete model: {model}")
+    fig.tight_layout()
+    fig.savefig(out / "vertical_stress.png", dpi=130)
+    plt.close(fig)
+
+
 def plot_displacement_envelope(out: Path, summary: dict) -> None:
     d = np.genfromtxt(out / "displacement_envelope.csv", delimiter=",",
                       names=True)
@@ -142,6 +175,7 @@ def main() -> None:
         plot_displacement_envelope(out, summary)
     if (out / "dam_points.csv").exists():
         plot_strain_rates(out, summary)
+        plot_vertical_stress(out, summary)
 
 
 if __name__ == "__main__":

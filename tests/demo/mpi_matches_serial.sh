@@ -51,6 +51,16 @@ cdiff = max(abs(ea["max_m"][top] - ca["ux_m"].max()),
             abs(ea["min_m"][top] - ca["ux_m"].min())) / peak
 print(f"displacement envelope 2 ranks vs serial {ediff:.2e}, "
       f"crest node vs crest history {cdiff:.2e}")
+# Vertical-stress envelope (nonlinear runs): sigma_yy lies between the
+# principal stresses at every point, so its envelope does too.
+try:
+    pa = np.genfromtxt(f"{a}/dam_points.csv", delimiter=",", names=True)
+    slack = 1e-9 * np.abs(pa["min_principal_mpa"]).max()
+    assert np.all(pa["max_syy_mpa"] <= pa["max_principal_mpa"] + slack)
+    assert np.all(pa["min_syy_mpa"] >= pa["min_principal_mpa"] - slack)
+    print(f"vertical stress envelope within the principal one at {len(pa)} points")
+except FileNotFoundError:
+    pass
 assert diff < tol and fdiff < 1e-8 and sdiff < tol
 assert ediff < tol and cdiff < 1e-8  # CSV files carry 10 digits
 PY

@@ -198,6 +198,8 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
         restart->arrays.at("env_max"), restart->arrays.at("env_t_max"),
         restart->arrays.at("env_min"), restart->arrays.at("env_t_min"));
     hist = restart->arrays.at("history");
+    if (face_u)
+      face_u->restore(restart->arrays.at("face_u"));
     results::print(comm, "restarting from the checkpoint at step " +
                              std::to_string(k0));
   }
@@ -260,6 +262,8 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     data.arrays["env_t_max"] = span_vec(envelope.max_times());
     data.arrays["env_min"] = span_vec(envelope.min_principal());
     data.arrays["env_t_min"] = span_vec(envelope.min_times());
+    if (face_u)
+      data.arrays["face_u"] = face_u->save();
     write_checkpoint(comm, ckpt_dir, data, print);
   };
 
@@ -288,7 +292,7 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
                           false, out_dir / "crest.csv");
 
   results::write_envelopes(fe, envelope, out_dir / "envelopes.xdmf");
-  if (face_u && k0 == 0)
+  if (face_u)
     face_u->write_csv(comm, out_dir / "displacement_envelope.csv");
   const json faces = write_faces(comm, s, envelope, face_pts, dim, out_dir);
   json summary =

@@ -37,7 +37,10 @@ using Clock = std::chrono::steady_clock;
 struct ScalarEnvelope
 {
   std::vector<double> max, t;
-  explicit ScalarEnvelope(std::size_t n) : max(n, 0.0), t(n, 0.0) {}
+  explicit ScalarEnvelope(std::size_t n, double start = 0.0)
+      : max(n, start), t(n, 0.0)
+  {
+  }
   void update(std::span<const double> v, double time)
   {
     for (std::size_t i = 0; i < max.size(); ++i)
@@ -61,7 +64,7 @@ results::Extreme scalar_extreme(MPI_Comm comm, const ScalarEnvelope& e,
   {
     double v;
     int rank;
-  } local{-1.0, 0}, global;
+  } local{-HUGE_VAL, 0}, global;
   MPI_Comm_rank(comm, &local.rank);
   std::size_t arg = 0;
   for (std::size_t i = 0; i < e.max.size(); ++i)
@@ -106,7 +109,8 @@ void write_dam_points(MPI_Comm comm, const results::StressEnvelope& env,
     return;
   std::ofstream csv(file);
   csv << "x_m,y_m,max_principal_mpa,min_principal_mpa,kappa_t,kappa_c,"
-         "max_strain_rate_per_s,t_max_strain_rate_s,max_kappa_t_rate_per_s\n";
+         "max_strain_rate_per_s,t_max_strain_rate_s,max_kappa_t_rate_per_s,"
+         "max_syy_mpa,min_syy_mpa\n";
   csv.precision(8);
   for (std::size_t i = 0; i < all.size(); i += nc)
   {
@@ -215,6 +219,10 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   }
   results::StressEnvelope envelope(3, cm.coordinates(), in_dam);
   ScalarEnvelope rate_env(n_pts), kt_rate_env(n_pts);
+  // Vertical stress sigma_yy (the paper's Fig. 8): largest and, as the
+  // largest of -sigma_yy, smallest; same stress as the principal envelopes.
+  ScalarEnvelope syy_max(n_pts, -HUGE_VAL), syy_min(n_pts, -HUGE_VAL);
+  std::vector<double> syy(n_pts);
   std::vector<std::vector<std::int32_t>> face_pts;
   for (const auto& [name, tag] : s.faces)
     face_pts.push_back(
@@ -263,6 +271,11 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     rate_env.t = restart->arrays.at("rate_t");
     kt_rate_env.max = restart->arrays.at("kt_rate_max");
     kt_rate_env.t = restart->arrays.at("kt_rate_t");
+    syy_max.max = restart->arrays.at("syy_max");
+    syy_max.t = restart->arrays.at("syy_t_max");
+    syy_min.max = restart->arrays.at("syy_min");
+    syy_min.t = restart->arrays.at("syy_t_min");
+    face_u.restore(restart->arrays.at("face_u"));
     hist = restart->arrays.at("history");
     stats = restart->arrays.at("newton");
     stats.resize(10, 0.0);
@@ -298,6 +311,12 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     envelope.update(std::span<const double>(s_field.data(), 3 * n_pts), t);
     rate_env.update(cm.strain_rate(), t);
     kt_rate_env.update(cm.kappa_t_rate(), t);
+    for (std::int32_t i = 0; i < n_pts; ++i)
+      syy[i] = s_field[3 * i + 1];
+    syy_max.update(syy, t);
+    for (double& v : syy)
+      v = -v;
+    syy_min.update(syy, t);
     const auto c = crest.value(newmark.u()), b = base.value(newmark.u());
     face_u.update(newmark.u(),
                   base.value_on_all(newmark.u())[0] - base_static[0],
@@ -335,6 +354,11 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     data.arrays["rate_t"] = rate_env.t;
     data.arrays["kt_rate_max"] = kt_rate_env.max;
     data.arrays["kt_rate_t"] = kt_rate_env.t;
+    data.arrays["syy_max"] = syy_max.max;
+    data.arrays["syy_t_max"] = syy_max.t;
+    data.arrays["syy_min"] = syy_min.max;
+    data.arrays["syy_t_min"] = syy_min.t;
+    data.arrays["face_u"] = face_u.save();
     write_checkpoint(comm, ckpt_dir, data, print);
   };
 
@@ -400,13 +424,19 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
                             {"max_strain_rate", rate_all},
                             {"max_kappa_t_rate", kt_rate_all}});
   const json faces = write_faces(comm, s, envelope, face_pts, dim, out_dir);
-  if (k0 == 0)
-    face_u.write_csv(comm, out_dir / "displacement_envelope.csv");
+  face_u.write_csv(comm, out_dir / "displacement_envelope.csv");
   {
     std::vector<double> kt(cm.kappa_t().begin(), cm.kappa_t().begin() + n_pts),
         kc(cm.kappa_c().begin(), cm.kappa_c().begin() + n_pts);
+    std::vector<double> syy_hi(n_pts), syy_lo(n_pts);
+    for (std::int32_t i = 0; i < n_pts; ++i)
+    {
+      syy_hi[i] = 1e-6 * syy_max.max[i];
+      syy_lo[i] = -1e-6 * syy_min.max[i];
+    }
     write_dam_points(comm, envelope, in_dam,
-                     {&kt, &kc, &rate_env.max, &rate_env.t, &kt_rate_env.max},
+                     {&kt, &kc, &rate_env.max, &rate_env.t, &kt_rate_env.max,
+                      &syy_hi, &syy_lo},
                      out_dir / "dam_points.csv");
   }
   ScalarEnvelope kt_final(n_pts);
@@ -414,6 +444,8 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   const auto kt_max = scalar_extreme(comm, kt_final, cm.coordinates(), in_dam);
   const auto rate_max =
       scalar_extreme(comm, rate_env, cm.coordinates(), in_dam);
+  const auto syy_hi = scalar_extreme(comm, syy_max, cm.coordinates(), in_dam);
+  const auto syy_lo = scalar_extreme(comm, syy_min, cm.coordinates(), in_dam);
 
   const int steps_run = std::max(1, n - k0);
   const auto& p = concrete.params;
@@ -439,6 +471,14 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
                                       {"x", rate_max.x[0]},
                                       {"y", rate_max.x[1]},
                                       {"t", rate_max.t}};
+  summary["max_vertical_stress_mpa"] = {{"value", 1e-6 * syy_hi.value},
+                                        {"x", syy_hi.x[0]},
+                                        {"y", syy_hi.x[1]},
+                                        {"t", syy_hi.t}};
+  summary["min_vertical_stress_mpa"] = {{"value", -1e-6 * syy_lo.value},
+                                        {"x", syy_lo.x[0]},
+                                        {"y", syy_lo.x[1]},
+                                        {"t", syy_lo.t}};
   summary["newton"] = {
       {"rtol", concrete.newton.rtol},
       {"static_iterations", static_g.iterations + static_r.iterations},

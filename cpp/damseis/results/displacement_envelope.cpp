@@ -8,6 +8,8 @@
 #include <fstream>
 #include <limits>
 #include <numeric>
+#include <stdexcept>
+#include <string>
 
 namespace damseis::results
 {
@@ -55,6 +57,24 @@ void DisplacementEnvelope::update(Vec u, double offset, Vec reference)
   if (reference)
     VecRestoreArrayRead(reference, &r);
   VecRestoreArrayRead(u, &a);
+}
+
+std::vector<double> DisplacementEnvelope::save() const
+{
+  std::vector<double> data(_max);
+  data.insert(data.end(), _min.begin(), _min.end());
+  return data;
+}
+
+void DisplacementEnvelope::restore(const std::vector<double>& data)
+{
+  if (data.size() != 2 * _max.size())
+    throw std::runtime_error("displacement envelope in the checkpoint has " +
+                             std::to_string(data.size()) +
+                             " values, expected " +
+                             std::to_string(2 * _max.size()));
+  std::copy(data.begin(), data.begin() + _max.size(), _max.begin());
+  std::copy(data.begin() + _max.size(), data.end(), _min.begin());
 }
 
 void DisplacementEnvelope::write_csv(MPI_Comm comm,

@@ -24,6 +24,10 @@ public:
   void update(Vec u, double offset, Vec reference);
   /// CSV on rank 0: x, y, max and min displacement [m], sorted by y.
   void write_csv(MPI_Comm comm, const std::filesystem::path& file) const;
+  /// The envelope so far (this rank's nodes: max then min), for
+  /// checkpoints, and back.
+  std::vector<double> save() const;
+  void restore(const std::vector<double>& data);
 
 private:
   int _bs = 0, _comp = 0;
