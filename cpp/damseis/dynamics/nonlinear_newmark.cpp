@@ -40,6 +40,10 @@ bool newton(const std::function<bool(Vec, Vec)>& residual,
             int level, Mat J, TangentSolver& tangent, double reference, Vec u,
             Vec R, Vec du, const NewtonSettings& s, StepReport& report)
 {
+  // Each step starts from the initial matrix's factors as preconditioner
+  // (measured: the last step's tangent preconditions worse, since the points
+  // that yielded in it mostly unload elastically).
+  tangent.forget();
   auto evaluate = [&](Vec x, Vec r)
   {
     const auto t0 = Clock::now();

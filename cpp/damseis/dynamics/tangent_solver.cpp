@@ -35,8 +35,8 @@ PetscErrorCode apply_factors(PC pc, Vec x, Vec y)
 
 TangentSolver::TangentSolver(MPI_Comm comm, double rtol, int max_iterations)
     : _rtol(rtol), _max_iterations(max_iterations),
-      _tangent(
-          std::make_unique<fem::DirectSolver>(comm, fem::Factorization::mumps))
+      _tangent(std::make_unique<fem::DirectSolver>(
+          comm, fem::Factorization::automatic))
 {
   if (_max_iterations <= 0)
     return;

@@ -6,7 +6,7 @@
 // low-rank term and GMRES converges in a few iterations, each costing one
 // pair of triangular solves; only when it does not (the cracked zone has
 // changed too much) is J itself factorised, and that factorisation becomes
-// the preconditioner of the following iterations and steps.
+// the preconditioner of the following iterations of the step.
 #pragma once
 
 #include <damseis/fem/direct_solver.h>
@@ -41,6 +41,10 @@ public:
   Direction solve(Mat J, const fem::DirectSolver& initial, int level, Vec R,
                   Vec du, double abs_tol);
 
+  /// Forgets the stored tangent factors: GMRES starts again from the
+  /// initial matrix's.
+  void forget() { _tangent_level = -1; }
+
   int last_krylov_iterations() const { return _last_iterations; }
   /// Wall time of the last factorisation in solve() [s] (0 if none).
   double last_factor_seconds() const { return _last_factor_seconds; }
@@ -49,7 +53,10 @@ private:
   double _rtol;
   int _max_iterations;
   KSP _krylov = nullptr;
-  std::unique_ptr<fem::DirectSolver> _tangent; ///< MUMPS LU (J is indefinite)
+  /// LU of J: PETSc's serially (its solves cost a third of MUMPS' here; a
+  /// zero pivot is reported and the initial matrix used instead), MUMPS in
+  /// parallel.
+  std::unique_ptr<fem::DirectSolver> _tangent;
   int _tangent_level = -1; ///< level of the stored factors (-1: none)
   int _last_iterations = 0;
   double _last_factor_seconds = 0.0;

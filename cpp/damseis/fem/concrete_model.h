@@ -105,6 +105,16 @@ private:
   void condense(const material::Matrix6& T, double* ct) const;
   /// One point: old state and total strain (Voigt 6) -> new state; the
   /// condensed 3x3 tangent into `ct`. Returns the update.
+  /// The common case of integrate_point(): if the elastic trial of the
+  /// point (plane stress: with the elastic out-of-plane strain) is
+  /// admissible, the elastic update into `out`, eps_new and ct, and true;
+  /// else false and nothing written (integrate_point() then does the work).
+  bool elastic_point(const material::HtcConcrete& m, std::int32_t material,
+                     const material::State& old,
+                     const std::array<double, 6>& eps_old,
+                     const double* eps_new_plane,
+                     std::array<double, 6>& eps_new, material::State& out,
+                     double* ct) const;
   material::Update integrate_point(const material::HtcConcrete& m,
                                    const material::State& old,
                                    const std::array<double, 6>& eps_old,
@@ -125,6 +135,10 @@ private:
   std::shared_ptr<dolfinx::fem::Form<double>> _L, _a;
   std::unique_ptr<dolfinx::fem::Expression<double>> _strain;
   std::vector<std::unique_ptr<material::HtcConcrete>> _dynamic, _static;
+  /// Per material: the elastic 6x6 and condensed 3x3 tangents (the same for
+  /// the dynamic and the static object), for the elastic-trial fast path.
+  std::vector<material::Matrix6> _De;
+  std::vector<std::array<double, 9>> _ct_elastic;
   std::vector<std::int32_t> _cell_material; ///< per local cell
   std::vector<std::int32_t> _dof;           ///< point p -> Sq dof (block)
   std::vector<std::int32_t> _dof_c;         ///< point p -> Cq dof (block)

@@ -1211,14 +1211,9 @@ Update HtcConcrete::integrate_step(const State& old, const Vector6& de,
     throw std::invalid_argument(
         "HtcConcrete::integrate: viscoplastic mode needs dt > 0");
 
-  const double tol_f = p_.tolerance * d_.fc0;
+  if (admissible(tr, old.kappa_c, old.kappa_t))
+    return u; // elastic step
   std::array<double, 5> phi;
-  {
-    const auto sp = principal_fast(tr);
-    surfaces<double>(sp, old.kappa_c, old.kappa_t, 0.0, 0.0, phi, nullptr);
-    if (phi[0] <= tol_f && phi[2] <= tol_f)
-      return u; // elastic step
-  }
 
   Eigen::Matrix3d S;
   S << tr[0], tr[3], tr[5], tr[3], tr[1], tr[4], tr[5], tr[4], tr[2];
@@ -1459,6 +1454,18 @@ Update HtcConcrete::integrate_step(const State& old, const Vector6& de,
   }
   u.tangent = T;
   return u;
+}
+
+bool HtcConcrete::admissible(const Vector6& stress, double kappa_c,
+                             double kappa_t) const
+{
+  if (p_.mode == Mode::elastic)
+    return true;
+  const double tol_f = p_.tolerance * d_.fc0;
+  std::array<double, 5> phi;
+  surfaces<double>(principal_fast(stress), kappa_c, kappa_t, 0.0, 0.0, phi,
+                   nullptr);
+  return phi[0] <= tol_f && phi[2] <= tol_f;
 }
 
 Matrix6 HtcConcrete::elastic_tangent() const

@@ -158,6 +158,10 @@ public:
   const ConcreteParameters& parameters() const { return p_; }
   const DerivedProperties& derived() const { return d_; }
   Matrix6 elastic_tangent() const;
+  /// The elastic-trial test of integrate(): true if `stress` lies on or
+  /// inside every surface for these internal variables at zero rates (a step
+  /// ending there is elastic); always true in elastic mode.
+  bool admissible(const Vector6& stress, double kappa_c, double kappa_t) const;
 
   /// The five yield functions (stress units) and, if n != nullptr, their
   /// gradients in principal space; s: principal stresses (descending).
