@@ -286,8 +286,9 @@ NonlinearNewmark::~NonlinearNewmark()
   }
   for (auto& [level, entry] : _initial)
   {
-    entry.second.reset();
-    MatDestroy(&entry.first);
+    entry.solver.reset();
+    MatDestroy(&entry.J0);
+    MatDestroy(&entry.rest);
   }
   if (_J)
     MatDestroy(&_J);
@@ -295,7 +296,7 @@ NonlinearNewmark::~NonlinearNewmark()
 
 const fem::DirectSolver& NonlinearNewmark::solver() const
 {
-  return *_initial.at(0).second;
+  return *_initial.at(0).solver;
 }
 
 const fem::DirectSolver& NonlinearNewmark::initial_solver(int level,
@@ -303,7 +304,10 @@ const fem::DirectSolver& NonlinearNewmark::initial_solver(int level,
 {
   auto it = _initial.find(level);
   if (it != _initial.end())
-    return *it->second.second;
+  {
+    _level = &it->second;
+    return *it->second.solver;
+  }
   const double dt = _scheme.dt / std::pow(2.0, level);
   const double beta = _scheme.beta(), gamma = _scheme.gamma();
   const double w = 1.0 + _scheme.alpha;
@@ -323,9 +327,12 @@ const fem::DirectSolver& NonlinearNewmark::initial_solver(int level,
     report.seconds_factorization += solver->factor_seconds();
   }
   auto& entry = _initial[level];
-  entry.first = J0;
-  entry.second = std::move(solver);
-  return *entry.second;
+  entry.J0 = J0;
+  MatDuplicate(J0, MAT_COPY_VALUES, &entry.rest);
+  MatAXPY(entry.rest, -w, _K0, SAME_NONZERO_PATTERN);
+  entry.solver = std::move(solver);
+  _level = &entry;
+  return *entry.solver;
 }
 
 void NonlinearNewmark::set_state(Vec u, Vec v, Vec a, Vec f, Vec f_int)
@@ -429,13 +436,15 @@ bool NonlinearNewmark::solve_step(double dt, Vec f_next, int level,
     return true;
   };
   // Consistent effective matrix: a0 M + (1 + alpha)(a1 C + K_T)
-  // = (a0 + w a1 aM) M + w a1 bK K0 + w K_T.
+  // = w K_T + (J0 - w K0), the second term stored per level: one addition
+  // of equal patterns (adding M with its subset pattern every time made the
+  // matrix cost 2.3 instead of 1.5 ms in rcc_gravity).
+  Mat rest = _level->rest;
   auto jacobian = [&](Mat J)
   {
     _system.tangent(J);
     MatScale(J, w);
-    MatAXPY(J, a0 + w * a1 * aM, _M, SUBSET_NONZERO_PATTERN);
-    MatAXPY(J, w * a1 * bK, _K0, SAME_NONZERO_PATTERN);
+    MatAXPY(J, 1.0, rest, SAME_NONZERO_PATTERN);
   };
 
   VecCopy(_u, _ut); // predictor: u' = u

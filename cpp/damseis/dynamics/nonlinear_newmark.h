@@ -136,7 +136,16 @@ private:
   NonlinearSystem& _system;
   NewtonSettings _settings;
   fem::Factorization _factorization;
-  std::map<int, std::pair<Mat, std::unique_ptr<fem::DirectSolver>>> _initial;
+  /// Per step length dt / 2^level: J0, its factors, and J0 - w K0 (the
+  /// inertia and damping part of every effective matrix, pattern of K0).
+  struct Level
+  {
+    Mat J0 = nullptr, rest = nullptr;
+    std::unique_ptr<fem::DirectSolver> solver;
+  };
+  std::map<int, Level> _initial;
+  /// The level whose matrices the last initial_solver() call returned.
+  const Level* _level = nullptr;
   Mat _J = nullptr; ///< consistent effective matrix
   std::unique_ptr<TangentSolver> _tangent_solver;
   Vec _u = nullptr, _v = nullptr, _a = nullptr, _f = nullptr, _fint = nullptr;
