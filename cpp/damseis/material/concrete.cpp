@@ -20,6 +20,20 @@ const double c23 = std::sqrt(2.0 / 3.0);
 /// decide whether the trial state is elastic.
 std::array<double, 3> principal_fast(const Vector6& s)
 {
+  if (s[4] == 0.0 && s[5] == 0.0)
+  {
+    // Plane states (no yz, zx shear): the in-plane pair in closed form and
+    // sigma_zz, sorted; no trigonometry (this test runs at every point of
+    // a 2D model in every Newton iteration).
+    const double c = 0.5 * (s[0] + s[1]);
+    const double r = std::hypot(0.5 * (s[0] - s[1]), s[3]);
+    std::array<double, 3> p = {c + r, c - r, s[2]};
+    if (p[2] > p[1])
+      std::swap(p[1], p[2]);
+    if (p[1] > p[0])
+      std::swap(p[0], p[1]);
+    return p;
+  }
   const double I1 = s[0] + s[1] + s[2], m = I1 / 3.0;
   const double d0 = s[0] - m, d1 = s[1] - m, d2 = s[2] - m;
   const double J2 = 0.5 * (d0 * d0 + d1 * d1 + d2 * d2) + s[3] * s[3] +
