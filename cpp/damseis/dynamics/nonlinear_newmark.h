@@ -8,10 +8,11 @@
 // once. While every material point of the trial is elastic, J0 is the exact
 // Jacobian and gives the direction. Otherwise the consistent tangent J is
 // assembled and J du = R solved by GMRES preconditioned with factors already
-// made (J0, or the last factorised tangent); J is factorised only when GMRES
-// would need too many iterations (TangentSolver). A step that does not
-// converge is cut in halves (recursively); a step that cannot be solved even
-// then throws StepFailure: an unconverged step is never accepted.
+// made (J0, or a tangent factorised earlier in the step); J is factorised
+// only when GMRES would need too many iterations (TangentSolver). A step
+// that does not converge is cut in halves (recursively); a step that cannot
+// be solved even then throws StepFailure: an unconverged step is never
+// accepted.
 #pragma once
 
 #include "newmark.h"

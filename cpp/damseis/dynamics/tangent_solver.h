@@ -1,7 +1,8 @@
 // Newton directions J du = R for the nonlinear integrators, reusing
 // factorisations (algorithms.md 6.2): GMRES on the consistent matrix J,
 // preconditioned by a matrix factorised earlier (the initial effective
-// matrix J0, or the last factorised tangent of the same step length).
+// matrix J0, or a tangent of the same step length factorised earlier in the
+// step; forget() at a step's start).
 // Where few material points are inelastic, J differs from that matrix by a
 // low-rank term and GMRES converges in a few iterations, each costing one
 // pair of triangular solves; only when it does not (the cracked zone has
