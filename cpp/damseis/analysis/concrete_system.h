@@ -21,6 +21,7 @@ public:
   {
     to_function(u, _u);
     last = _m.update(_u, dt);
+    substepped += last.substepped;
     return last.failed == 0;
   }
   void internal_force(Vec f) override { _m.assemble_internal_force(f); }
@@ -33,6 +34,7 @@ public:
   }
   fem::MaterialUpdateStats last;     ///< of the last trial
   fem::MaterialUpdateStats accepted; ///< of the last accepted trial
+  std::int64_t substepped = 0;       ///< sub-stepped point updates, all trials
 
 private:
   fem::ConcreteModel& _m;

@@ -342,7 +342,7 @@ MaterialUpdateStats ConcreteModel::update(const dfem::Function<double>& u,
 
   std::span<double> sig = _sig->x()->mutable_array();
   std::span<double> ct = _Ct->x()->mutable_array();
-  std::int64_t counts[3] = {0, 0, 0};
+  std::int64_t counts[4] = {0, 0, 0, 0};
   int max_it = 0;
   for (std::int32_t c = 0; c < _num_cells; ++c)
   {
@@ -387,19 +387,21 @@ MaterialUpdateStats ConcreteModel::update(const dfem::Function<double>& u,
         ++counts[0];
         counts[1] += up.active != 0;
         counts[2] += !up.converged;
+        counts[3] += up.substeps > 1;
         max_it = std::max(max_it, up.iterations);
       }
     }
   }
   _trial_dt = dt;
   MaterialUpdateStats s;
-  std::int64_t total[3];
+  std::int64_t total[4];
   MPI_Comm comm = _fe.mesh()->comm();
-  MPI_Allreduce(counts, total, 3, MPI_INT64_T, MPI_SUM, comm);
+  MPI_Allreduce(counts, total, 4, MPI_INT64_T, MPI_SUM, comm);
   MPI_Allreduce(&max_it, &s.max_iterations, 1, MPI_INT, MPI_MAX, comm);
   s.points = total[0];
   s.inelastic = total[1];
   s.failed = total[2];
+  s.substepped = total[3];
   return s;
 }
 

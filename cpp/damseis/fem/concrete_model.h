@@ -21,7 +21,10 @@ struct MaterialUpdateStats
   std::int64_t points = 0;    ///< points updated (owned cells, all ranks)
   std::int64_t inelastic = 0; ///< points with an active return map
   std::int64_t failed = 0;    ///< points whose local Newton did not converge
-  int max_iterations = 0;     ///< largest local Newton count
+  /// points that needed the sub-stepping fall-back (each costs up to 55
+  /// single-step return maps: the composite tangent by central differences)
+  std::int64_t substepped = 0;
+  int max_iterations = 0; ///< largest local Newton count
 };
 
 /// Material state at the quadrature points of a 2D model.
