@@ -85,6 +85,20 @@ def plot_envelopes(out: Path, summary: dict) -> None:
     plt.close(fig)
 
 
+def save_section_maps(fig, axes, summary: dict, title: str, file: Path) -> None:
+    """Common finish of the maps over the dam section: equal axes in m, the
+    concrete model in the title, written to `file`."""
+    for ax in axes:
+        ax.set_aspect("equal")
+        ax.set_xlabel("x [m]")
+        ax.set_ylabel("y [m]")
+    model = summary.get("concrete", {}).get("model", "")
+    fig.suptitle(f"{title}: {model}")
+    fig.tight_layout()
+    fig.savefig(file, dpi=130)
+    plt.close(fig)
+
+
 def plot_strain_rates(out: Path, summary: dict) -> None:
     d = np.genfromtxt(out / "dam_points.csv", delimiter=",", names=True)
     fig, axes = plt.subplots(1, 2, figsize=(11, 6.5))
@@ -103,15 +117,8 @@ def plot_strain_rates(out: Path, summary: dict) -> None:
     fig.colorbar(sc, ax=axes[1], shrink=0.8, label="kappa_t [-]")
     axes[1].set_title("Equivalent tensile viscoplastic strain (end)",
                       fontsize=10)
-    for ax in axes:
-        ax.set_aspect("equal")
-        ax.set_xlabel("x [m]")
-        ax.set_ylabel("y [m]")
-    model = summary.get("concrete", {}).get("model", "")
-    fig.suptitle(f"Concrete model: {model}")
-    fig.tight_layout()
-    fig.savefig(out / "strain_rates.png", dpi=130)
-    plt.close(fig)
+    save_section_maps(fig, axes, summary, "Concrete model",
+                      out / "strain_rates.png")
 
 
 def plot_vertical_stress(out: Path, summary: dict) -> None:
@@ -136,14 +143,9 @@ def plot_vertical_stress(out: Path, summary: dict) -> None:
             ax.plot([e["x"]], [e["y"]], "k*", ms=9)
             title += f" ({e['value']:.2f} MPa at t = {e['t']:.2f} s)"
         ax.set_title(title, fontsize=10)
-        ax.set_aspect("equal")
-        ax.set_xlabel("x [m]")
-        ax.set_ylabel("y [m]")
-    model = summary.get("concrete", {}).get("model", "")
-    fig.suptitle(f"Envelope of the vertical stress, concrete model: {model}")
-    fig.tight_layout()
-    fig.savefig(out / "vertical_stress.png", dpi=130)
-    plt.close(fig)
+    save_section_maps(fig, axes, summary,
+                      "Envelope of the vertical stress, concrete model",
+                      out / "vertical_stress.png")
 
 
 def plot_displacement_envelope(out: Path, summary: dict) -> None:
