@@ -1,5 +1,7 @@
 #include "arch_dam_analysis.h"
 #include "linear_seismic.h"
+#include <cstdio>
+#include <cstdlib>
 #include <damseis/fem/tied_dofs.h>
 #include <damseis/geometry/arch_mesh.h>
 #include <damseis/geometry/tags.h>
@@ -49,6 +51,24 @@ nlohmann::json run_arch_dam_analysis(MPI_Comm comm, const ArchDamConfig& cfg,
   summary["mesh_seconds"] = arch.total_seconds;
   write_summary_and_plots(comm, summary, out_dir, cfg.seismic.plots,
                           "plot_arch_dam.py");
+  if (cfg.seismic.plots)
+  {
+    // The model with its tags (model.xdmf, for ParaView) and its pictures:
+    // mesh_model.png in perspective and mesh_joints.png, the dam from
+    // downstream with the joints labelled (the paper's Figs. 10-11, 16-17).
+    geometry::write_model(arch.model, out_dir / "model.xdmf");
+    int rank = 0;
+    MPI_Comm_rank(comm, &rank);
+    if (rank == 0)
+    {
+      const std::string cmd =
+          std::string(DAMSEIS_PYTHON) + " " + DAMSEIS_SOURCE_DIR +
+          "/scripts/plot_arch_mesh.py \"" + (out_dir / "model.xdmf").string() +
+          "\" --out \"" + (out_dir / "mesh").string() + "\"";
+      if (std::system(cmd.c_str()) != 0)
+        std::fprintf(stderr, "warning: plotting failed: %s\n", cmd.c_str());
+    }
+  }
   return summary;
 }
 } // namespace damseis::analysis
