@@ -41,17 +41,10 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   const auto wall_start = Clock::now();
   const auto model = fe.model();
   MPI_Comm comm = model.mesh->comm();
-  int rank = 0, ranks = 1;
+  int rank = 0;
   MPI_Comm_rank(comm, &rank);
-  MPI_Comm_size(comm, &ranks);
   const int dim = fe.dim();
-  const std::int64_t n_cells =
-      model.mesh->topology().index_map(dim)->size_global();
-  const std::int64_t n_dofs = fe.V()->dofmap()->index_map->size_global() * dim;
-  results::print(comm, "damseis: " + std::to_string(n_cells) + " cells, " +
-                           std::to_string(n_dofs) + " dofs, P" +
-                           std::to_string(fe.degree()) + ", " +
-                           std::to_string(ranks) + " rank(s)");
+  print_model_line(fe, "");
 
   const bool wet = s.reservoir.depth() > 0.0;
   const fem::Reservoir* added = s.westergaard && wet ? &s.reservoir : nullptr;

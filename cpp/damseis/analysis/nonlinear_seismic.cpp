@@ -102,21 +102,11 @@ void write_dam_points(MPI_Comm comm, const results::StressEnvelope& env,
     for (const auto* c : columns)
       local.push_back((*c)[i]);
   }
-  int rank = 0;
-  MPI_Comm_rank(comm, &rank);
-  const std::vector<double> all = results::gather_to_root(comm, local);
-  if (rank != 0)
-    return;
-  std::ofstream csv(file);
-  csv << "x_m,y_m,max_principal_mpa,min_principal_mpa,kappa_t,kappa_c,"
-         "max_strain_rate_per_s,t_max_strain_rate_s,max_kappa_t_rate_per_s,"
-         "max_syy_mpa,min_syy_mpa\n";
-  csv.precision(8);
-  for (std::size_t i = 0; i < all.size(); i += nc)
-  {
-    for (int k = 0; k < nc; ++k)
-      csv << all[i + k] << (k < nc - 1 ? "," : "\n");
-  }
+  write_rows_csv(comm, local, nc,
+                 "x_m,y_m,max_principal_mpa,min_principal_mpa,kappa_t,kappa_c,"
+                 "max_strain_rate_per_s,t_max_strain_rate_s,"
+                 "max_kappa_t_rate_per_s,max_syy_mpa,min_syy_mpa",
+                 file);
 }
 } // namespace
 
@@ -131,18 +121,10 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   const auto wall_start = Clock::now();
   const auto model = fe.model();
   MPI_Comm comm = model.mesh->comm();
-  int rank = 0, ranks = 1;
+  int rank = 0;
   MPI_Comm_rank(comm, &rank);
-  MPI_Comm_size(comm, &ranks);
   const int dim = fe.dim();
-  const std::int64_t n_cells =
-      model.mesh->topology().index_map(dim)->size_global();
-  const std::int64_t n_dofs = fe.V()->dofmap()->index_map->size_global() * dim;
-  results::print(comm, "damseis: " + std::to_string(n_cells) + " cells, " +
-                           std::to_string(n_dofs) + " dofs, P" +
-                           std::to_string(fe.degree()) + ", " +
-                           std::to_string(ranks) + " rank(s), concrete " +
-                           to_string(concrete.kind));
+  print_model_line(fe, ", concrete " + to_string(concrete.kind));
 
   const bool wet = s.reservoir.depth() > 0.0;
   const fem::Reservoir* added = s.westergaard && wet ? &s.reservoir : nullptr;

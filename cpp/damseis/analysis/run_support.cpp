@@ -234,19 +234,44 @@ void write_face_csv(MPI_Comm comm, const results::StressEnvelope& env,
                   env.max_times()[p], env.min_principal()[p] * 1e-6,
                   env.min_times()[p]});
   }
+  write_rows_csv(
+      comm, local, 7,
+      "x_m,y_m,z_m,max_principal_mpa,t_max_s,min_principal_mpa,t_min_s", file);
+}
+
+void write_rows_csv(MPI_Comm comm, const std::vector<double>& local,
+                    int columns, const std::string& header,
+                    const std::filesystem::path& file)
+{
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   const std::vector<double> all = results::gather_to_root(comm, local);
   if (rank != 0)
     return;
   std::ofstream csv(file);
-  csv << "x_m,y_m,z_m,max_principal_mpa,t_max_s,min_principal_mpa,t_min_s\n";
+  csv << header << "\n";
   csv.precision(8);
-  for (std::size_t i = 0; i < all.size(); i += 7)
+  for (std::size_t i = 0; i < all.size(); i += columns)
   {
-    for (int k = 0; k < 7; ++k)
-      csv << all[i + k] << (k < 6 ? "," : "\n");
+    for (int k = 0; k < columns; ++k)
+      csv << all[i + k] << (k < columns - 1 ? "," : "\n");
   }
+}
+
+void print_model_line(fem::ElasticModel& fe, const std::string& suffix)
+{
+  const auto model = fe.model();
+  MPI_Comm comm = model.mesh->comm();
+  int ranks = 1;
+  MPI_Comm_size(comm, &ranks);
+  const int dim = fe.dim();
+  const std::int64_t n_cells =
+      model.mesh->topology().index_map(dim)->size_global();
+  const std::int64_t n_dofs = fe.V()->dofmap()->index_map->size_global() * dim;
+  results::print(comm, "damseis: " + std::to_string(n_cells) + " cells, " +
+                           std::to_string(n_dofs) + " dofs, P" +
+                           std::to_string(fe.degree()) + ", " +
+                           std::to_string(ranks) + " rank(s)" + suffix);
 }
 
 json write_crest_history(MPI_Comm comm, const std::vector<double>& hist,

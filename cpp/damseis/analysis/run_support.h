@@ -93,6 +93,16 @@ void write_modes(fem::ElasticModel& fe, const fem::Modes& modes,
                  const std::function<Vec(Vec)>& full,
                  const std::filesystem::path& file);
 
+/// Prints the model line of a run: "damseis: N cells, M dofs, Pk, R rank(s)"
+/// followed by `suffix`.
+void print_model_line(fem::ElasticModel& fe, const std::string& suffix);
+
+/// Gathers every rank's rows (`columns` values each, flattened) on rank 0
+/// and writes them under `header` as CSV (8 digits).
+void write_rows_csv(MPI_Comm comm, const std::vector<double>& local,
+                    int columns, const std::string& header,
+                    const std::filesystem::path& file);
+
 /// Writes the envelope values of the given owned points of every rank into
 /// a CSV file on rank 0.
 void write_face_csv(MPI_Comm comm, const results::StressEnvelope& env,
