@@ -180,9 +180,17 @@ ModalResult modal_and_damping(Mat K, Mat M, Mat M_dry, const SeismicSettings& s)
 {
   const auto t0 = std::chrono::steady_clock::now();
   ModalResult r;
-  r.modes = fem::solve_modes(K, M, s.modes);
-  r.dry_hz = M_dry ? fem::solve_modes(K, M_dry, s.modes).frequencies_hz
-                   : r.modes.frequencies_hz;
+  if (M_dry)
+  {
+    std::vector<fem::Modes> both = fem::solve_modes(K, {M, M_dry}, s.modes);
+    r.modes = std::move(both[0]);
+    r.dry_hz = both[1].frequencies_hz;
+  }
+  else
+  {
+    r.modes = fem::solve_modes(K, M, s.modes);
+    r.dry_hz = r.modes.frequencies_hz;
+  }
   r.seconds = seconds_since(t0);
   if (s.damping_frequencies_hz.size() == 2)
   {

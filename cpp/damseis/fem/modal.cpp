@@ -30,43 +30,15 @@ Modes::~Modes()
     VecDestroy(&v);
 }
 
-Modes solve_modes(Mat K, Mat M, int count)
+namespace
 {
-  static bool slepc_ready = false;
-  if (!slepc_ready)
-  {
-    SlepcInitialize(nullptr, nullptr, nullptr, nullptr);
-    slepc_ready = true;
-  }
-  MPI_Comm comm;
-  PetscObjectGetComm(reinterpret_cast<PetscObject>(K), &comm);
-  EPS eps;
-  EPSCreate(comm, &eps);
-  EPSSetOperators(eps, K, M);
-  EPSSetProblemType(eps, EPS_GHEP);
-  EPSSetType(eps, EPSKRYLOVSCHUR);
-  EPSSetDimensions(eps, count, PETSC_DEFAULT, PETSC_DEFAULT);
-  EPSSetTarget(eps, 0.0);
-  EPSSetWhichEigenpairs(eps, EPS_TARGET_MAGNITUDE);
-  EPSSetTolerances(eps, 1e-10, 200);
-  ST st;
-  EPSGetST(eps, &st);
-  STSetType(st, STSINVERT);
-  KSP ksp;
-  STGetKSP(st, &ksp);
-  KSPSetType(ksp, KSPPREONLY);
-  PC pc;
-  KSPGetPC(ksp, &pc);
-  // MUMPS Cholesky does not take blocked (BAIJ) storage; LU does.
-  PCSetType(pc, is_blocked(K) ? PCLU : PCCHOLESKY);
-  PCFactorSetMatSolverType(pc, MATSOLVERMUMPS);
-  EPSSolve(eps);
-
+/// The `count` lowest eigenpairs of the problem set up in `eps`.
+Modes extract(EPS eps, Mat K, int count)
+{
   PetscInt nconv = 0;
   EPSGetConverged(eps, &nconv);
   if (nconv < count)
   {
-    EPSDestroy(&eps);
     throw std::runtime_error("modal analysis: only " + std::to_string(nconv) +
                              " of " + std::to_string(count) +
                              " modes converged");
@@ -94,7 +66,72 @@ Modes solve_modes(Mat K, Mat M, int count)
     EPSGetEigenvector(eps, i, x, nullptr);
     modes.shapes.push_back(x);
   }
-  EPSDestroy(&eps);
   return modes;
+}
+} // namespace
+
+Modes solve_modes(Mat K, Mat M, int count)
+{
+  return std::move(solve_modes(K, std::vector<Mat>{M}, count).front());
+}
+
+std::vector<Modes> solve_modes(Mat K, const std::vector<Mat>& Ms, int count)
+{
+  static bool slepc_ready = false;
+  if (!slepc_ready)
+  {
+    SlepcInitialize(nullptr, nullptr, nullptr, nullptr);
+    slepc_ready = true;
+  }
+  MPI_Comm comm;
+  PetscObjectGetComm(reinterpret_cast<PetscObject>(K), &comm);
+  EPS eps;
+  EPSCreate(comm, &eps);
+  EPSSetProblemType(eps, EPS_GHEP);
+  EPSSetType(eps, EPSKRYLOVSCHUR);
+  EPSSetDimensions(eps, count, PETSC_DEFAULT, PETSC_DEFAULT);
+  EPSSetTarget(eps, 0.0);
+  EPSSetWhichEigenpairs(eps, EPS_TARGET_MAGNITUDE);
+  EPSSetTolerances(eps, 1e-10, 200);
+  ST st;
+  EPSGetST(eps, &st);
+  STSetType(st, STSINVERT);
+  KSP ksp;
+  STGetKSP(st, &ksp);
+  KSPSetType(ksp, KSPPREONLY);
+  PC pc;
+  KSPGetPC(ksp, &pc);
+  // MUMPS Cholesky does not take blocked (BAIJ) storage; LU does.
+  PCSetType(pc, is_blocked(K) ? PCLU : PCCHOLESKY);
+  PCFactorSetMatSolverType(pc, MATSOLVERMUMPS);
+  // Shift 0: the shift-and-invert operator is K itself, so K's factors
+  // serve every problem, as long as SLEPc sees the same Mat objects (a new
+  // M resets the spectral transformation, factors included): the masses
+  // are copied in turn into one work matrix (K, unchanged, is not
+  // refactorised; the test counts the factorisations).
+  Mat W = nullptr;
+  std::vector<Modes> out;
+  try
+  {
+    for (std::size_t i = 0; i < Ms.size(); ++i)
+    {
+      if (i == 0)
+        MatDuplicate(Ms[0], MAT_COPY_VALUES, &W);
+      else
+        MatCopy(Ms[i], W, DIFFERENT_NONZERO_PATTERN);
+      EPSSetOperators(eps, K, W);
+      EPSSolve(eps);
+      out.push_back(extract(eps, K, count));
+    }
+  }
+  catch (...)
+  {
+    MatDestroy(&W);
+    EPSDestroy(&eps);
+    throw;
+  }
+  MatDestroy(&W);
+  EPSDestroy(&eps);
+  return out;
 }
 } // namespace damseis::fem
