@@ -22,6 +22,8 @@ public:
     to_function(u, _u);
     last = _m.update(_u, dt);
     substepped += last.substepped;
+    return_maps += last.return_maps;
+    local_iterations += last.local_iterations;
     return last.failed == 0;
   }
   void internal_force(Vec f) override { _m.assemble_internal_force(f); }
@@ -35,6 +37,8 @@ public:
   fem::MaterialUpdateStats last;     ///< of the last trial
   fem::MaterialUpdateStats accepted; ///< of the last accepted trial
   std::int64_t substepped = 0;       ///< sub-stepped point updates, all trials
+  /// return maps and local Newton iterations, all trials
+  std::int64_t return_maps = 0, local_iterations = 0;
 
 private:
   fem::ConcreteModel& _m;

@@ -224,8 +224,9 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   // Newton statistics of the time history (checkpointed): iterations,
   // tangent factorisations, cuts, max iterations in a step, max inelastic
   // points, GMRES iterations, seconds in residuals, tangent assembly,
-  // factorisations and direction solves, sub-stepped point updates.
-  std::vector<double> stats(11, 0.0);
+  // factorisations and direction solves, sub-stepped point updates, return
+  // maps, local Newton iterations.
+  std::vector<double> stats(13, 0.0);
 
   int k0 = 0;
   const std::filesystem::path ckpt_dir = out_dir / "checkpoint";
@@ -260,7 +261,7 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     face_u.restore(restart->arrays.at("face_u"));
     hist = restart->arrays.at("history");
     stats = restart->arrays.at("newton");
-    stats.resize(11, 0.0);
+    stats.resize(13, 0.0);
     results::print(comm, "restarting from the checkpoint at step " +
                              std::to_string(k0));
   }
@@ -351,7 +352,8 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     record_state(0, 0.0);
   StopSignals signals;
   results::Progress progress(comm, n - k0);
-  system.substepped = 0; // count the time history only
+  // count the time history only
+  system.substepped = system.return_maps = system.local_iterations = 0;
   const auto loop_start = Clock::now();
   for (int k = k0 + 1; k <= n; ++k)
   {
@@ -377,7 +379,9 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     stats[8] += rep.seconds_factorization;
     stats[9] += rep.seconds_solve;
     stats[10] += static_cast<double>(system.substepped);
-    system.substepped = 0;
+    stats[11] += static_cast<double>(system.return_maps);
+    stats[12] += static_cast<double>(system.local_iterations);
+    system.substepped = system.return_maps = system.local_iterations = 0;
     record_state(k, k * dt);
     progress.report(
         k - k0, k * dt,
@@ -474,6 +478,8 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
       {"tangent_factorizations", stats[1]},
       {"krylov_iterations", stats[5]},
       {"substepped_point_updates", stats[10]},
+      {"return_maps", stats[11]},
+      {"local_newton_iterations", stats[12]},
       {"seconds",
        {{"residual", stats[6]},
         {"tangent_assembly", stats[7]},

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <damseis/material/plane_stress.h>
 #include <dolfinx/common/IndexMap.h>
 #include <dolfinx/fem/assembler.h>
 #include <dolfinx/fem/petsc.h>
@@ -243,50 +244,24 @@ bool ConcreteModel::elastic_point(const material::HtcConcrete& m,
 material::Update ConcreteModel::integrate_point(
     const material::HtcConcrete& m, const material::State& old,
     const std::array<double, 6>& eps_old, const double* e, double dt,
-    std::array<double, 6>& eps_new, double* ct) const
+    std::array<double, 6>& eps_new, double* ct, int& return_maps,
+    std::int64_t& local_iterations) const
 {
   material::Vector6 de = {
       e[0] - eps_old[0], e[1] - eps_old[1], 0.0, e[2] - eps_old[3], 0.0, 0.0};
   material::Update up;
   if (_plane == PlaneMode::plane_strain)
+  {
     up = m.integrate(old, de, dt);
+    return_maps = 1;
+    local_iterations = up.iterations;
+  }
   else
   {
-    // sigma_zz = 0 by Newton on the out-of-plane strain increment
-    // (sigma_zz is monotone in eps_zz). Where the point is perfectly
-    // plastic along zz the algorithmic slope vanishes: a secant or the
-    // elastic slope is used instead.
-    const double nu = m.derived().nu;
-    de[2] = -nu / (1.0 - nu) * (de[0] + de[1]);
-    const double scale = m.derived().ft0;
-    const double elastic_slope = m.elastic_tangent()[2 * 6 + 2];
-    double s_prev = 0.0, e_prev = 0.0;
-    for (int it = 0; it < 60; ++it)
-    {
-      up = m.integrate(old, de, dt);
-      const double s33 = up.state.stress[2];
-      double smax = 0.0;
-      for (double s : up.state.stress)
-        smax = std::max(smax, std::abs(s));
-      // 1e-8: the return map itself moves an on-surface stress by ~1e-10
-      // relative (round-off), which a tighter test would chase forever.
-      if (!up.converged || std::abs(s33) <= 1e-8 * (smax + scale))
-        break;
-      if (it == 59)
-        up.converged = false;
-      // Slope: the algorithmic one; if it (nearly) vanishes, the secant of
-      // the last two iterates; else the elastic one.
-      double slope = up.tangent[2 * 6 + 2];
-      if (!(slope > 1e-6 * elastic_slope))
-      {
-        const double secant =
-            it > 0 && de[2] != e_prev ? (s33 - s_prev) / (de[2] - e_prev) : 0.0;
-        slope = secant > 1e-6 * elastic_slope ? secant : elastic_slope;
-      }
-      s_prev = s33;
-      e_prev = de[2];
-      de[2] -= s33 / slope;
-    }
+    material::PlaneStressCounts counts;
+    up = material::integrate_plane_stress(m, old, de, dt, &counts);
+    return_maps = counts.return_maps;
+    local_iterations = counts.local_iterations;
   }
   for (int i = 0; i < 6; ++i)
     eps_new[i] = eps_old[i] + de[i];
@@ -342,9 +317,13 @@ MaterialUpdateStats ConcreteModel::update(const dfem::Function<double>& u,
 
   std::span<double> sig = _sig->x()->mutable_array();
   std::span<double> ct = _Ct->x()->mutable_array();
-  std::int64_t counts[4] = {0, 0, 0, 0};
+  std::int64_t counts[6] = {0, 0, 0, 0, 0, 0};
   int max_it = 0;
-  for (std::int32_t c = 0; c < _num_cells; ++c)
+  // A trial with a failed point is discarded by the caller (the line search
+  // shortens the step, or the step is cut): the update stops at the first
+  // failure of an owned point (a ghost point's failure is its owner's).
+  bool failed = false;
+  for (std::int32_t c = 0; c < _num_cells && !failed; ++c)
   {
     const auto& m =
         dt > 0.0 ? *_dynamic[_cell_material[c]] : *_static[_cell_material[c]];
@@ -361,9 +340,11 @@ MaterialUpdateStats ConcreteModel::update(const dfem::Function<double>& u,
         counts[0] += c < _num_owned_cells;
         continue;
       }
+      int maps = 0;
+      std::int64_t its = 0;
       const material::Update up =
           integrate_point(m, _state[p], _eps[p], &_strain_values[3 * p], dt,
-                          _eps_trial[p], ct_p);
+                          _eps_trial[p], ct_p, maps, its);
       _trial[p] = up.state;
       for (int i = 0; i < 3; ++i)
         sig[3 * dof + i] = up.state.stress[plane_index[i]];
@@ -372,12 +353,13 @@ MaterialUpdateStats ConcreteModel::update(const dfem::Function<double>& u,
         const auto& o = _state[p];
         std::fprintf(
             stderr,
-            "material failure: dt %.17g h %.17g kc %.17g kt %.17g kcd %.17g "
+            "material failure after %d return maps, %ld local iterations: dt "
+            "%.17g h %.17g kc %.17g kt %.17g kcd %.17g "
             "ktd %.17g\n  stress %.17g %.17g %.17g %.17g %.17g %.17g\n"
             "  d_eps %.17g %.17g %.17g %.17g %.17g %.17g\n",
-            dt, m.parameters().element_size, o.kappa_c, o.kappa_t,
-            o.kappa_c_rate, o.kappa_t_rate, o.stress[0], o.stress[1],
-            o.stress[2], o.stress[3], o.stress[4], o.stress[5],
+            maps, static_cast<long>(its), dt, m.parameters().element_size,
+            o.kappa_c, o.kappa_t, o.kappa_c_rate, o.kappa_t_rate, o.stress[0],
+            o.stress[1], o.stress[2], o.stress[3], o.stress[4], o.stress[5],
             _eps_trial[p][0] - _eps[p][0], _eps_trial[p][1] - _eps[p][1],
             _eps_trial[p][2] - _eps[p][2], _eps_trial[p][3] - _eps[p][3], 0.0,
             0.0);
@@ -388,20 +370,29 @@ MaterialUpdateStats ConcreteModel::update(const dfem::Function<double>& u,
         counts[1] += up.active != 0;
         counts[2] += !up.converged;
         counts[3] += up.substeps > 1;
+        counts[4] += maps;
+        counts[5] += its;
         max_it = std::max(max_it, up.iterations);
+        if (!up.converged)
+        {
+          failed = true;
+          break;
+        }
       }
     }
   }
   _trial_dt = dt;
   MaterialUpdateStats s;
-  std::int64_t total[4];
+  std::int64_t total[6];
   MPI_Comm comm = _fe.mesh()->comm();
-  MPI_Allreduce(counts, total, 4, MPI_INT64_T, MPI_SUM, comm);
+  MPI_Allreduce(counts, total, 6, MPI_INT64_T, MPI_SUM, comm);
   MPI_Allreduce(&max_it, &s.max_iterations, 1, MPI_INT, MPI_MAX, comm);
   s.points = total[0];
   s.inelastic = total[1];
   s.failed = total[2];
   s.substepped = total[3];
+  s.return_maps = total[4];
+  s.local_iterations = total[5];
   return s;
 }
 
@@ -426,12 +417,12 @@ void ConcreteModel::accept()
     else
       _out[4][dof] = 0.0;
   }
+  std::copy(_sig->x()->array().begin(), _sig->x()->array().end(),
+            _sig_committed.begin());
   _state.swap(_trial);
   _eps.swap(_eps_trial);
   _trial = _state;
   _eps_trial = _eps;
-  std::copy(_sig->x()->array().begin(), _sig->x()->array().end(),
-            _sig_committed.begin());
 }
 
 void ConcreteModel::assemble_internal_force(Vec f, bool apply_bc) const

@@ -24,6 +24,10 @@ struct MaterialUpdateStats
   /// points that needed the sub-stepping fall-back (each costs up to 55
   /// single-step return maps: the composite tangent by central differences)
   std::int64_t substepped = 0;
+  /// single-step return maps (integrate() calls; plane stress: one per
+  /// iteration on sigma_zz = 0) and their local Newton iterations, at the
+  /// points that left the elastic fast path
+  std::int64_t return_maps = 0, local_iterations = 0;
   int max_iterations = 0; ///< largest local Newton count
 };
 
@@ -122,8 +126,9 @@ private:
                                    const material::State& old,
                                    const std::array<double, 6>& eps_old,
                                    const double* eps_new_plane, double dt,
-                                   std::array<double, 6>& eps_new,
-                                   double* ct) const;
+                                   std::array<double, 6>& eps_new, double* ct,
+                                   int& return_maps,
+                                   std::int64_t& local_iterations) const;
 
   ElasticModel& _fe;
   PlaneMode _plane;
