@@ -59,6 +59,14 @@ void add_concrete_keys(input::Schema& s)
             "GMRES iterations on reused factors before the tangent is "
             "factorised; 0 factorises every tangent (exact Newton)")
       .between(0, 1000);
+  s.string("solver.material_integration", "implicit", "-",
+           "implicit: backward-Euler return map inside a Newton iteration "
+           "per step; implex: IMPL-EX (Oliver, Huespe & Cante 2008), the "
+           "stress of each dynamic step extrapolated from the last step's "
+           "plastic strain increment, so a step is one linear solve with "
+           "the initial matrix (first-order accurate in dt; check with a "
+           "smaller time.dt)",
+           {"implicit", "implex"});
   s.integer("solver.static_increments", "5", "-",
             "load increments of the reservoir in the static stage")
       .between(1, 1000);
@@ -110,6 +118,7 @@ ConcreteSettings read_concrete_settings(const input::Case& c, double E,
   s.newton.krylov_max_iterations =
       static_cast<int>(c.integer("solver.krylov_max_iterations"));
   s.static_increments = static_cast<int>(c.integer("solver.static_increments"));
+  s.implex = c.string("solver.material_integration") == "implex";
   return s;
 }
 } // namespace damseis::analysis

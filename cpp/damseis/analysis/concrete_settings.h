@@ -32,6 +32,9 @@ struct ConcreteSettings
   double factor_E = 1.0, factor_strength = 1.0;
   dynamics::NewtonSettings newton;
   int static_increments = 5;
+  /// IMPL-EX integration of the dynamic steps (fem::ConcreteModel::
+  /// set_implex) instead of the implicit return map in a Newton iteration.
+  bool implex = false;
 };
 
 /// Adds material.model, concrete.* and the Newton keys.

@@ -28,7 +28,10 @@ public:
   }
   void internal_force(Vec f) override { _m.assemble_internal_force(f); }
   void tangent(Mat A) override { _m.assemble_tangent(A); }
-  bool tangent_is_initial() const override { return last.inelastic == 0; }
+  bool tangent_is_initial() const override
+  {
+    return last.inelastic == 0 || _m.trial_extrapolated();
+  }
   void accept() override
   {
     _m.accept();

@@ -131,6 +131,7 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   Matrix K(fe.assemble_stiffness(), false);
   Matrix M(fe.assemble_mass(added), false);
   fem::ConcreteModel cm(fe, {{tags::dam, concrete.params}}, elastic, plane);
+  cm.set_implex(concrete.implex);
   ConcreteSystem system(cm);
 
   // Static stage: dead weight, then the reservoir (and silt, uplift) in
@@ -444,16 +445,18 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
                       {static_seconds, modal.seconds,
                        newmark.solver().factor_seconds(), loop_seconds, k0});
   summary.update(crest_summary);
-  summary["concrete"] = {{"model", to_string(concrete.kind)},
-                         {"E_pa", p.E},
-                         {"fc_mpa", p.fc0 * 1e-6},
-                         {"ft_mpa", p.ft0 * 1e-6},
-                         {"Gf_n_per_m", p.Gf},
-                         {"dynamic_factor_E", concrete.factor_E},
-                         {"dynamic_factor_strength", concrete.factor_strength},
-                         {"material_bins", cm.material_count()},
-                         {"cells_with_reduced_tensile_strength",
-                          cm.cells_with_reduced_strength()}};
+  summary["concrete"] = {
+      {"model", to_string(concrete.kind)},
+      {"E_pa", p.E},
+      {"fc_mpa", p.fc0 * 1e-6},
+      {"ft_mpa", p.ft0 * 1e-6},
+      {"Gf_n_per_m", p.Gf},
+      {"dynamic_factor_E", concrete.factor_E},
+      {"dynamic_factor_strength", concrete.factor_strength},
+      {"material_bins", cm.material_count()},
+      {"material_integration", concrete.implex ? "implex" : "implicit"},
+      {"cells_with_reduced_tensile_strength",
+       cm.cells_with_reduced_strength()}};
   summary["max_kappa_t"] = {
       {"value", kt_max.value}, {"x", kt_max.x[0]}, {"y", kt_max.x[1]}};
   summary["max_strain_rate_per_s"] = {{"value", rate_max.value},

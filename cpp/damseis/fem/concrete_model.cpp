@@ -181,6 +181,7 @@ ConcreteModel::ConcreteModel(
   _trial = _state;
   _eps.assign(np, {0, 0, 0, 0, 0, 0});
   _eps_trial = _eps;
+  _dep = _eps;
   _strain_values.assign(np * 3, 0.0);
   // Initial tangent: elastic.
   std::span<double> ct = _Ct->x()->mutable_array();
@@ -393,7 +394,63 @@ MaterialUpdateStats ConcreteModel::update(const dfem::Function<double>& u,
   s.substepped = total[3];
   s.return_maps = total[4];
   s.local_iterations = total[5];
+  if (_implex && dt > 0.0 && s.failed == 0)
+    extrapolate_stress(dt);
   return s;
+}
+
+void ConcreteModel::extrapolate_stress(double dt)
+{
+  // r = 0 in the first dynamic step (the static stage's increments are not
+  // a rate).
+  const double r = _dt_last > 0.0 ? dt / _dt_last : 0.0;
+  std::span<double> sig = _sig->x()->mutable_array();
+  std::span<double> ct = _Ct->x()->mutable_array();
+  for (std::int32_t c = 0; c < _num_cells; ++c)
+  {
+    const std::int32_t mat = _cell_material[c];
+    for (int q = 0; q < _nq; ++q)
+    {
+      const std::size_t p = static_cast<std::size_t>(c) * _nq + q;
+      const double* e = &_strain_values[3 * p];
+      const auto& eps = _eps[p];
+      const auto& dep = _dep[p];
+      const auto& s0 = _state[p].stress;
+      double* out = &sig[3 * _dof[p]];
+      if (_plane == PlaneMode::plane_stress)
+      {
+        // sigma_zz stays 0: the condensed elastic matrix on the in-plane
+        // elastic strain increment.
+        const double de[3] = {e[0] - eps[0] - r * dep[0],
+                              e[1] - eps[1] - r * dep[1],
+                              e[2] - eps[3] - r * dep[3]};
+        const auto& D = _ct_elastic[mat];
+        for (int i = 0; i < 3; ++i)
+          out[i] = s0[plane_index[i]] + D[3 * i] * de[0] +
+                   D[3 * i + 1] * de[1] + D[3 * i + 2] * de[2];
+      }
+      else
+      {
+        // eps_zz = 0: the elastic strain increment has -r dep_zz there.
+        const double de[6] = {e[0] - eps[0] - r * dep[0],
+                              e[1] - eps[1] - r * dep[1],
+                              -r * dep[2],
+                              e[2] - eps[3] - r * dep[3],
+                              -r * dep[4],
+                              -r * dep[5]};
+        const auto& D = _De[mat];
+        for (int i = 0; i < 3; ++i)
+        {
+          const int row = plane_index[i];
+          double v = s0[row];
+          for (int j = 0; j < 6; ++j)
+            v += D[6 * row + j] * de[j];
+          out[i] = v;
+        }
+      }
+      std::copy_n(_ct_elastic[mat].data(), 9, &ct[9 * _dof_c[p]]);
+    }
+  }
 }
 
 void ConcreteModel::accept()
@@ -417,8 +474,24 @@ void ConcreteModel::accept()
     else
       _out[4][dof] = 0.0;
   }
-  std::copy(_sig->x()->array().begin(), _sig->x()->array().end(),
-            _sig_committed.begin());
+  if (trial_extrapolated())
+  {
+    // The reported stress is the implicit one (on or inside the surfaces);
+    // the extrapolated one only balanced the step.
+    for (std::size_t p = 0; p < np; ++p)
+    {
+      for (int i = 0; i < 3; ++i)
+        _sig_committed[3 * _dof[p] + i] = _trial[p].stress[plane_index[i]];
+      for (int i = 0; i < 6; ++i)
+        _dep[p][i] = _trial[p].plastic_strain[i] - _state[p].plastic_strain[i];
+    }
+    _dt_last = _trial_dt;
+  }
+  else
+  {
+    std::copy(_sig->x()->array().begin(), _sig->x()->array().end(),
+              _sig_committed.begin());
+  }
   _state.swap(_trial);
   _eps.swap(_eps_trial);
   _trial = _state;
@@ -484,8 +557,15 @@ std::map<std::string, std::vector<double>> ConcreteModel::save() const
                  {s.kappa_c, s.kappa_t, s.kappa_c_rate, s.kappa_t_rate});
     state.insert(state.end(), _eps[p].begin(), _eps[p].end());
   }
+  std::vector<double> dep;
+  dep.reserve(np * 6 + 1);
+  for (const auto& d : _dep)
+    dep.insert(dep.end(), d.begin(), d.end());
+  dep.push_back(_dt_last);
   std::map<std::string, std::vector<double>> out = {
-      {"material_state", state}, {"material_sigma", _sig_committed}};
+      {"material_state", state},
+      {"material_sigma", _sig_committed},
+      {"material_implex", dep}};
   for (int k = 0; k < 5; ++k)
     out["material_out" + std::to_string(k)] = _out[k];
   return out;
@@ -512,6 +592,15 @@ void ConcreteModel::restore(
   }
   _trial = _state;
   _eps_trial = _eps;
+  const auto dep = arrays.find("material_implex");
+  if (dep != arrays.end())
+  {
+    if (dep->second.size() != np * 6 + 1)
+      throw std::runtime_error("checkpoint IMPL-EX state has the wrong size");
+    for (std::size_t p = 0; p < np; ++p)
+      std::copy_n(&dep->second[6 * p], 6, _dep[p].begin());
+    _dt_last = dep->second.back();
+  }
   _sig_committed = arrays.at("material_sigma");
   std::copy(_sig_committed.begin(), _sig_committed.end(),
             _sig->x()->mutable_array().begin());

@@ -65,6 +65,18 @@ public:
   /// Makes the trial state the committed state (strain rates from dt).
   void accept();
 
+  /// IMPL-EX integration (Oliver, Huespe & Cante 2008, CMAME 197) of the
+  /// dynamic steps: the stress that enters the internal force of a trial is
+  /// extrapolated from the committed state with the plastic strain
+  /// increment of the last step, sigma~ = sigma_n + D (d_eps - r d_eps_p,n),
+  /// r = dt / dt_n, linear in u with the elastic tangent; the implicit
+  /// return map still updates the state (and gives the reported stress).
+  /// Every dynamic step is then one linear solve with the initial matrix.
+  /// Static steps (dt = 0) stay implicit.
+  void set_implex(bool on) { _implex = on; }
+  /// True if the last trial was extrapolated (its tangent is elastic).
+  bool trial_extrapolated() const { return _implex && _trial_dt > 0.0; }
+
   /// Internal force of the trial state into `f` (layout of V, zero at fixed
   /// dofs when `apply_bc`); ghost-consistent.
   void assemble_internal_force(Vec f, bool apply_bc = true) const;
@@ -157,5 +169,13 @@ private:
   std::array<std::vector<double>, 5> _out;
   double _trial_dt = 0.0;
   std::int64_t _reduced_cells = 0;
+  // IMPL-EX: the plastic strain increment of the last accepted dynamic step
+  // per point, and that step's length (0: none yet, no extrapolation).
+  bool _implex = false;
+  std::vector<std::array<double, 6>> _dep;
+  double _dt_last = 0.0;
+  /// Overwrites the stress coefficient with the extrapolated stress of every
+  /// point for the strains of the last update (IMPL-EX).
+  void extrapolate_stress(double dt);
 };
 } // namespace damseis::fem
