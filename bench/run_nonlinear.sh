@@ -4,6 +4,8 @@
 # steps): runs a Table 1 case (default demos/koyna/koyna_table1.toml) and
 # writes bench/results/<name>-nonlinear-<date>.md from the three summaries.
 #   bench/run_nonlinear.sh [BUILD_DIR] [EXECUTABLE] [CASE] [--set ...]
+# BENCH_TAG=x appends -x to the report's name (e.g. a run with
+# --set solver.material_integration=implex).
 # Run by hand on an otherwise idle machine (it takes minutes).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -13,7 +15,7 @@ case=${3:-$root/demos/koyna/koyna_table1.toml}
 shift $(( $# < 3 ? $# : 3 ))
 out=$root/bench/results
 mkdir -p "$out"
-report=$out/$exe-nonlinear-$(date +%Y-%m-%d).md
+report=$out/$exe-nonlinear${BENCH_TAG:+-$BENCH_TAG}-$(date +%Y-%m-%d).md
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 "$build/bin/$exe" --case "$case" --out "$work" --set output.plots=false \
@@ -35,7 +37,9 @@ el = rows[0][1]["seconds_per_step"]
 cpu = subprocess.run(["bash", "-c", "grep -m1 'model name' /proc/cpuinfo | cut -d: -f2"],
                      capture_output=True, text=True).stdout.strip()
 with open(report, "w") as f:
+    integ = rows[1][1]["concrete"].get("material_integration", "implicit")
     f.write(f"# Nonlinear concrete cost, {case}\n\n")
+    f.write(f"Material integration: {integ}.\n")
     f.write(f"Machine: {cpu}; one rank; one run each (the runs take minutes).\n")
     f.write(f"Linear engine on the same mesh: {1000 * lin:.2f} ms/step.\n\n")
     f.write("| model | cells | dofs | Newton it./step | max it. in a step | GMRES it. | tangent factorisations | step cuts | ms/step | / elastic | / linear | max tension [MPa] | max compression [MPa] | crest [cm] |\n")

@@ -273,6 +273,32 @@ TEST(ConcreteStructure, TensionBarDissipatesFractureEnergy)
 
 namespace
 {
+/// Seismic settings of the Koyna-section tests: reservoir with added mass,
+/// Rayleigh damping on modes 1 and 3, `duration` seconds of a smooth
+/// two-frequency ground acceleration (peak 4.5 m/s^2) at step dt.
+damseis::analysis::SeismicSettings section_settings(double dt, double duration)
+{
+  damseis::analysis::SeismicSettings s;
+  s.reservoir.level = 91.75;
+  s.modes = 3;
+  s.damping_modes = {1, 3};
+  s.scheme.dt = dt;
+  s.steps = static_cast<int>(std::lround(duration / dt));
+  s.motion[0].active = true;
+  for (int k = 0; k <= s.steps; ++k)
+  {
+    const double t = k * dt;
+    s.motion[0].acceleration.push_back(3.0 * std::sin(2 * M_PI * 2.5 * t) +
+                                       1.5 * std::sin(2 * M_PI * 7.0 * t));
+  }
+  s.output_every = 100000;
+  s.crest_point = {0.0, 103.0, 0};
+  s.base_point = {0.0, 0.0, 0};
+  s.faces = {{"upstream", tags::upstream_face}};
+  s.plots = false;
+  return s;
+}
+
 TEST(ConcreteStructure, ElasticModeMatchesLinearEngine)
 {
   // Koyna section, 8 m mesh, rigid base, reservoir with added mass, 200
@@ -280,24 +306,7 @@ TEST(ConcreteStructure, ElasticModeMatchesLinearEngine)
   damseis::geometry::GravityDamSection sec;
   sec.mesh_size = 8.0;
   const Material concrete{30e9, 0.2, 2500};
-  damseis::analysis::SeismicSettings s;
-  s.reservoir.level = 91.75;
-  s.modes = 3;
-  s.damping_modes = {1, 3};
-  s.scheme.dt = 0.01;
-  s.steps = 200;
-  s.motion[0].active = true;
-  for (int k = 0; k <= s.steps; ++k)
-  {
-    const double t = k * s.scheme.dt;
-    s.motion[0].acceleration.push_back(3.0 * std::sin(2 * M_PI * 2.5 * t) +
-                                       1.5 * std::sin(2 * M_PI * 7.0 * t));
-  }
-  s.output_every = 1000;
-  s.crest_point = {0.0, 103.0, 0};
-  s.base_point = {0.0, 0.0, 0};
-  s.faces = {{"upstream", tags::upstream_face}};
-  s.plots = false;
+  const damseis::analysis::SeismicSettings s = section_settings(0.01, 2.0);
   const auto dir = std::filesystem::temp_directory_path() / "damseis_elastic";
   auto run = [&](bool nonlinear)
   {
@@ -343,24 +352,7 @@ std::vector<double> plastic_section(double dt, bool implex,
   damseis::geometry::GravityDamSection sec;
   sec.mesh_size = 8.0;
   const Material concrete{30e9, 0.2, 2500};
-  damseis::analysis::SeismicSettings s;
-  s.reservoir.level = 91.75;
-  s.modes = 3;
-  s.damping_modes = {1, 3};
-  s.scheme.dt = dt;
-  s.steps = static_cast<int>(std::lround(2.0 / dt));
-  s.motion[0].active = true;
-  for (int k = 0; k <= s.steps; ++k)
-  {
-    const double t = k * dt;
-    s.motion[0].acceleration.push_back(3.0 * std::sin(2 * M_PI * 2.5 * t) +
-                                       1.5 * std::sin(2 * M_PI * 7.0 * t));
-  }
-  s.output_every = 100000;
-  s.crest_point = {0.0, 103.0, 0};
-  s.base_point = {0.0, 0.0, 0};
-  s.faces = {{"upstream", tags::upstream_face}};
-  s.plots = false;
+  const damseis::analysis::SeismicSettings s = section_settings(dt, 2.0);
   ElasticModel fe(damseis::geometry::build_gravity_dam(MPI_COMM_WORLD, sec), 2,
                   {{tags::dam, concrete}}, PlaneMode::plane_stress);
   fe.fix({tags::dam_base});
