@@ -21,9 +21,7 @@ public:
   {
     to_function(u, _u);
     last = _m.update(_u, dt);
-    substepped += last.substepped;
-    return_maps += last.return_maps;
-    local_iterations += last.local_iterations;
+    count(last);
     return last.failed == 0;
   }
   void internal_force(Vec f) override { _m.assemble_internal_force(f); }
@@ -32,10 +30,21 @@ public:
   {
     return last.inelastic == 0 || _m.trial_extrapolated();
   }
-  void accept() override
+  bool accept() override
   {
-    _m.accept();
-    accepted = last;
+    // After an IMPL-EX trial the implicit return map runs here: its counts
+    // are those of the step.
+    const bool extrapolated = _m.trial_extrapolated();
+    fem::MaterialUpdateStats implicit;
+    const bool ok = _m.accept(&implicit);
+    if (extrapolated)
+    {
+      last = implicit;
+      count(implicit);
+    }
+    if (ok)
+      accepted = last;
+    return ok;
   }
   fem::MaterialUpdateStats last;     ///< of the last trial
   fem::MaterialUpdateStats accepted; ///< of the last accepted trial
@@ -44,6 +53,12 @@ public:
   std::int64_t return_maps = 0, local_iterations = 0;
 
 private:
+  void count(const fem::MaterialUpdateStats& s)
+  {
+    substepped += s.substepped;
+    return_maps += s.return_maps;
+    local_iterations += s.local_iterations;
+  }
   fem::ConcreteModel& _m;
   dolfinx::fem::Function<double> _u;
 };

@@ -131,7 +131,8 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   Matrix K(fe.assemble_stiffness(), false);
   Matrix M(fe.assemble_mass(added), false);
   fem::ConcreteModel cm(fe, {{tags::dam, concrete.params}}, elastic, plane);
-  cm.set_implex(concrete.implex);
+  // (An elastic material has no plastic strain to extrapolate.)
+  cm.set_implex(concrete.implex && concrete.kind != ConcreteModelKind::elastic);
   ConcreteSystem system(cm);
 
   // Static stage: dead weight, then the reservoir (and silt, uplift) in

@@ -224,9 +224,9 @@ StepReport solve_static(NonlinearSystem& system, Mat K0, Vec F_from, Vec F_to,
     const double reference = std::max(norm(F), norm(F_to));
     VecCopy(u, ut);
     if (newton(residual, jacobian, system, initial, 0, J, tangent_solver,
-               reference, ut, R, du, settings, report))
+               reference, ut, R, du, settings, report) &&
+        system.accept())
     {
-      system.accept();
       VecCopy(ut, u);
       done = target;
       todo.pop_back();
@@ -456,12 +456,13 @@ bool NonlinearNewmark::solve_step(double dt, Vec f_next, int level,
   // Accept: newton() returns true right after evaluating the residual at
   // the converged _ut, so _vt, _at, _fint_t and the system's trial state
   // belong to it.
+  if (!_system.accept())
+    return false;
   VecCopy(_ut, _u);
   VecCopy(_vt, _v);
   VecCopy(_at, _a);
   VecCopy(_fint_t, _fint);
   VecCopy(f_next, _f);
-  _system.accept();
   return true;
 }
 } // namespace damseis::dynamics

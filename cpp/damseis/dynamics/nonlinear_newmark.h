@@ -60,8 +60,10 @@ public:
   /// Tangent of the last trial into A (the pattern of K0; fixed rows and
   /// columns identity).
   virtual void tangent(Mat A) = 0;
-  /// The last trial becomes the committed state.
-  virtual void accept() = 0;
+  /// The last trial becomes the committed state. False if that fails (an
+  /// IMPL-EX state update at a point): the committed state is unchanged
+  /// and the step is cut.
+  virtual bool accept() = 0;
   /// True if the tangent of the last trial is the initial stiffness K0
   /// (every point elastic): then the factorised initial matrix is exact.
   virtual bool tangent_is_initial() const { return false; }

@@ -176,6 +176,10 @@ ConcreteModel::ConcreteModel(
   }
   MPI_Allreduce(&reduced_local, &_reduced_cells, 1, MPI_INT64_T, MPI_SUM,
                 mesh->comm());
+  const std::int64_t owned_points =
+      static_cast<std::int64_t>(_num_owned_cells) * _nq;
+  MPI_Allreduce(&owned_points, &_num_owned_points, 1, MPI_INT64_T, MPI_SUM,
+                mesh->comm());
 
   _state.assign(np, material::State{});
   _trial = _state;
@@ -315,7 +319,20 @@ MaterialUpdateStats ConcreteModel::update(const dfem::Function<double>& u,
             _u->x()->mutable_array().begin());
   RowMajor view{_strain_values.data(), static_cast<std::size_t>(_nq) * 3};
   _strain->eval(std::span<const std::int32_t>(_cells), view);
+  _trial_dt = dt;
+  if (trial_extrapolated())
+  {
+    // IMPL-EX: the implicit return map waits for accept().
+    extrapolate_stress(dt);
+    MaterialUpdateStats s;
+    s.points = _num_owned_points;
+    return s;
+  }
+  return update_points(dt);
+}
 
+MaterialUpdateStats ConcreteModel::update_points(double dt)
+{
   std::span<double> sig = _sig->x()->mutable_array();
   std::span<double> ct = _Ct->x()->mutable_array();
   std::int64_t counts[6] = {0, 0, 0, 0, 0, 0};
@@ -382,7 +399,6 @@ MaterialUpdateStats ConcreteModel::update(const dfem::Function<double>& u,
       }
     }
   }
-  _trial_dt = dt;
   MaterialUpdateStats s;
   std::int64_t total[6];
   MPI_Comm comm = _fe.mesh()->comm();
@@ -394,8 +410,6 @@ MaterialUpdateStats ConcreteModel::update(const dfem::Function<double>& u,
   s.substepped = total[3];
   s.return_maps = total[4];
   s.local_iterations = total[5];
-  if (_implex && dt > 0.0 && s.failed == 0)
-    extrapolate_stress(dt);
   return s;
 }
 
@@ -453,9 +467,25 @@ void ConcreteModel::extrapolate_stress(double dt)
   }
 }
 
-void ConcreteModel::accept()
+bool ConcreteModel::accept(MaterialUpdateStats* implicit)
 {
   const std::size_t np = _state.size();
+  if (trial_extrapolated())
+  {
+    // IMPL-EX: the implicit return map at the balanced strains updates the
+    // state (and the stress coefficient: the reported stress is the
+    // implicit one, on or inside the surfaces); the plastic strain
+    // increment is kept for the next extrapolation.
+    const MaterialUpdateStats st = update_points(_trial_dt);
+    if (implicit)
+      *implicit = st;
+    if (st.failed > 0)
+      return false;
+    for (std::size_t p = 0; p < np; ++p)
+      for (int i = 0; i < 6; ++i)
+        _dep[p][i] = _trial[p].plastic_strain[i] - _state[p].plastic_strain[i];
+    _dt_last = _trial_dt;
+  }
   for (std::size_t p = 0; p < np; ++p)
   {
     const std::int32_t dof = _dof[p];
@@ -474,28 +504,13 @@ void ConcreteModel::accept()
     else
       _out[4][dof] = 0.0;
   }
-  if (trial_extrapolated())
-  {
-    // The reported stress is the implicit one (on or inside the surfaces);
-    // the extrapolated one only balanced the step.
-    for (std::size_t p = 0; p < np; ++p)
-    {
-      for (int i = 0; i < 3; ++i)
-        _sig_committed[3 * _dof[p] + i] = _trial[p].stress[plane_index[i]];
-      for (int i = 0; i < 6; ++i)
-        _dep[p][i] = _trial[p].plastic_strain[i] - _state[p].plastic_strain[i];
-    }
-    _dt_last = _trial_dt;
-  }
-  else
-  {
-    std::copy(_sig->x()->array().begin(), _sig->x()->array().end(),
-              _sig_committed.begin());
-  }
+  std::copy(_sig->x()->array().begin(), _sig->x()->array().end(),
+            _sig_committed.begin());
   _state.swap(_trial);
   _eps.swap(_eps_trial);
   _trial = _state;
   _eps_trial = _eps;
+  return true;
 }
 
 void ConcreteModel::assemble_internal_force(Vec f, bool apply_bc) const

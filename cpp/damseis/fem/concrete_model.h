@@ -63,16 +63,19 @@ public:
   MaterialUpdateStats update(const dolfinx::fem::Function<double>& u,
                              double dt);
   /// Makes the trial state the committed state (strain rates from dt).
-  void accept();
+  /// After an extrapolated (IMPL-EX) trial, first runs the implicit return
+  /// map at the trial's strains (its counts into `implicit`); false, with
+  /// the committed state untouched, if a point fails there.
+  bool accept(MaterialUpdateStats* implicit = nullptr);
 
   /// IMPL-EX integration (Oliver, Huespe & Cante 2008, CMAME 197) of the
   /// dynamic steps: the stress that enters the internal force of a trial is
   /// extrapolated from the committed state with the plastic strain
   /// increment of the last step, sigma~ = sigma_n + D (d_eps - r d_eps_p,n),
   /// r = dt / dt_n, linear in u with the elastic tangent; the implicit
-  /// return map still updates the state (and gives the reported stress).
-  /// Every dynamic step is then one linear solve with the initial matrix.
-  /// Static steps (dt = 0) stay implicit.
+  /// return map updates the state in accept() (and gives the reported
+  /// stress). Every dynamic step is then one linear solve with the initial
+  /// matrix. Static steps (dt = 0) stay implicit.
   void set_implex(bool on) { _implex = on; }
   /// True if the last trial was extrapolated (its tangent is elastic).
   bool trial_extrapolated() const { return _implex && _trial_dt > 0.0; }
@@ -177,5 +180,10 @@ private:
   /// Overwrites the stress coefficient with the extrapolated stress of every
   /// point for the strains of the last update (IMPL-EX).
   void extrapolate_stress(double dt);
+  /// The return map at every point for the strains of the last update
+  /// (stops at the first failed owned point); fills the stress and tangent
+  /// coefficients. Collective.
+  MaterialUpdateStats update_points(double dt);
+  std::int64_t _num_owned_points = 0; ///< all ranks
 };
 } // namespace damseis::fem
