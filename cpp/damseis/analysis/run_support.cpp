@@ -176,22 +176,34 @@ void StopSignals::checkpoint_or_stop(
   }
 }
 
-ModalResult modal_and_damping(Mat K, Mat M, Mat M_dry, const SeismicSettings& s)
+ModalResult modal_and_damping(Mat K, Mat M, Mat M_dry, const SeismicSettings& s,
+                              const std::function<void(KSP)>& with_K_factors)
 {
   const auto t0 = std::chrono::steady_clock::now();
+  double other = 0.0; // time in with_K_factors
+  auto timed = [&](KSP ksp)
+  {
+    const auto t1 = std::chrono::steady_clock::now();
+    with_K_factors(ksp);
+    other += seconds_since(t1);
+  };
+  std::function<void(KSP)> callback;
+  if (with_K_factors)
+    callback = timed;
   ModalResult r;
   if (M_dry)
   {
-    std::vector<fem::Modes> both = fem::solve_modes(K, {M, M_dry}, s.modes);
+    std::vector<fem::Modes> both =
+        fem::solve_modes(K, {M, M_dry}, s.modes, callback);
     r.modes = std::move(both[0]);
     r.dry_hz = both[1].frequencies_hz;
   }
   else
   {
-    r.modes = fem::solve_modes(K, M, s.modes);
+    r.modes = std::move(fem::solve_modes(K, {M}, s.modes, callback)[0]);
     r.dry_hz = r.modes.frequencies_hz;
   }
-  r.seconds = seconds_since(t0);
+  r.seconds = seconds_since(t0) - other;
   if (s.damping_frequencies_hz.size() == 2)
   {
     r.f1 = s.damping_frequencies_hz[0];

@@ -78,6 +78,8 @@ private:
 
 /// Modal analysis (with the added mass in M, and dry if `M_dry`) and the
 /// Rayleigh damping of the settings; prints the frequencies (rank 0).
+/// `with_K_factors`: see fem::solve_modes (its time is not counted in
+/// `seconds`).
 struct ModalResult
 {
   fem::Modes modes;
@@ -86,8 +88,9 @@ struct ModalResult
   dynamics::RayleighDamping damping;
   double seconds = 0.0;
 };
-ModalResult modal_and_damping(Mat K, Mat M, Mat M_dry,
-                              const SeismicSettings& s);
+ModalResult
+modal_and_damping(Mat K, Mat M, Mat M_dry, const SeismicSettings& s,
+                  const std::function<void(KSP)>& with_K_factors = {});
 /// Writes the mode shapes (P1 vertex displacement) as an XDMF series.
 void write_modes(fem::ElasticModel& fe, const fem::Modes& modes,
                  const std::function<Vec(Vec)>& full,

@@ -75,7 +75,8 @@ Modes solve_modes(Mat K, Mat M, int count)
   return std::move(solve_modes(K, std::vector<Mat>{M}, count).front());
 }
 
-std::vector<Modes> solve_modes(Mat K, const std::vector<Mat>& Ms, int count)
+std::vector<Modes> solve_modes(Mat K, const std::vector<Mat>& Ms, int count,
+                               const std::function<void(KSP)>& with_K_factors)
 {
   static bool slepc_ready = false;
   if (!slepc_ready)
@@ -122,6 +123,8 @@ std::vector<Modes> solve_modes(Mat K, const std::vector<Mat>& Ms, int count)
       EPSSetOperators(eps, K, W);
       EPSSolve(eps);
       out.push_back(extract(eps, K, count));
+      if (i == 0 && with_K_factors)
+        with_K_factors(ksp);
     }
   }
   catch (...)

@@ -1,6 +1,8 @@
 // Natural frequencies and mode shapes: K phi = omega^2 M phi (SLEPc).
 #pragma once
 
+#include <functional>
+#include <petscksp.h>
 #include <petscmat.h>
 #include <vector>
 
@@ -30,5 +32,10 @@ Modes solve_modes(Mat K, Mat M, int count);
 /// factors serve every problem (at the paper's arch dam scale one MUMPS
 /// factorisation is ~25 s of the ~80 s modal analysis). Returns the modes
 /// of each M in order. Collective.
-std::vector<Modes> solve_modes(Mat K, const std::vector<Mat>& Ms, int count);
+/// `with_K_factors`, if given, is called once, after the first problem,
+/// with a KSP that solves K x = b by those factors (KSPSolve; e.g. the
+/// static load case, so that K is factorised once for both).
+std::vector<Modes>
+solve_modes(Mat K, const std::vector<Mat>& Ms, int count,
+            const std::function<void(KSP)>& with_K_factors = {});
 } // namespace damseis::fem
