@@ -67,6 +67,10 @@ void add_concrete_keys(input::Schema& s)
            "the initial matrix (first-order accurate in dt; check with a "
            "smaller time.dt)",
            {"implicit", "implex"});
+  s.boolean("solver.extrapolated_predictor", "false", "-",
+            "implicit integration: start each step's Newton iteration from "
+            "the step's IMPL-EX solution (one extra solve with the "
+            "factorised initial matrix) instead of the last displacement");
   s.integer("solver.static_increments", "5", "-",
             "load increments of the reservoir in the static stage")
       .between(1, 1000);
@@ -119,6 +123,9 @@ ConcreteSettings read_concrete_settings(const input::Case& c, double E,
       static_cast<int>(c.integer("solver.krylov_max_iterations"));
   s.static_increments = static_cast<int>(c.integer("solver.static_increments"));
   s.implex = c.string("solver.material_integration") == "implex";
+  s.newton.extrapolated_predictor = !s.implex &&
+                                    s.kind != ConcreteModelKind::elastic &&
+                                    c.boolean("solver.extrapolated_predictor");
   return s;
 }
 } // namespace damseis::analysis

@@ -30,6 +30,11 @@ public:
   {
     return last.inelastic == 0 || _m.trial_extrapolated();
   }
+  bool set_extrapolation(bool on) override
+  {
+    _m.set_implex(on);
+    return true;
+  }
   bool accept() override
   {
     // After an IMPL-EX trial the implicit return map runs here: its counts

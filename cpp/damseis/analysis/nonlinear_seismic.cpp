@@ -177,8 +177,14 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
 
   // Dynamic stage: M a + C v + f_int(u) = F_static - M sum_c r_c a_gc(t),
   // u relative to the base, total (static included).
+  // The extrapolated predictor needs plastic strain to extrapolate, and
+  // IMPL-EX steps are extrapolated anyway.
+  dynamics::NewtonSettings newton_settings = concrete.newton;
+  newton_settings.extrapolated_predictor =
+      concrete.newton.extrapolated_predictor && !concrete.implex &&
+      concrete.kind != ConcreteModelKind::elastic;
   dynamics::NonlinearNewmark newmark(M.mat(), K.mat(), modal.damping, s.scheme,
-                                     system, concrete.newton, s.factorization);
+                                     system, newton_settings, s.factorization);
   const GroundMotionLoad ground(fe, s, M.mat());
   Vector f = column_vector(K.mat());
   auto set_load = [&](int k) { ground.assemble(k, F_static.vec(), f.vec()); };
@@ -474,6 +480,7 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
                                         {"t", syy_lo.t}};
   summary["newton"] = {
       {"rtol", concrete.newton.rtol},
+      {"extrapolated_predictor", newton_settings.extrapolated_predictor},
       {"static_iterations", static_g.iterations + static_r.iterations},
       {"static_cuts", static_g.cuts + static_r.cuts},
       {"iterations", stats[0]},

@@ -41,6 +41,11 @@ struct NewtonSettings
   /// GMRES iterations before the tangent is factorised instead; 0: always
   /// factorise (exact Newton).
   int krylov_max_iterations = 60;
+  /// Start each step's Newton iteration from the IMPL-EX solution of the
+  /// step (one solve with the factorised initial matrix, stresses
+  /// extrapolated with the last plastic increment) instead of the last
+  /// displacement, where the system can extrapolate.
+  bool extrapolated_predictor = false;
   /// Called after every residual evaluation of an accepted iterate with the
   /// iteration number and ||R|| / ||F_ext|| (tests, logging).
   std::function<void(int, double)> monitor;
@@ -67,6 +72,9 @@ public:
   /// True if the tangent of the last trial is the initial stiffness K0
   /// (every point elastic): then the factorised initial matrix is exact.
   virtual bool tangent_is_initial() const { return false; }
+  /// Switches extrapolated (IMPL-EX) trials on or off; false if the system
+  /// cannot extrapolate (nothing changed).
+  virtual bool set_extrapolation(bool) { return false; }
 };
 
 /// Work of one (possibly cut) step.

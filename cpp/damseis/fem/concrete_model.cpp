@@ -474,13 +474,17 @@ bool ConcreteModel::accept(MaterialUpdateStats* implicit)
   {
     // IMPL-EX: the implicit return map at the balanced strains updates the
     // state (and the stress coefficient: the reported stress is the
-    // implicit one, on or inside the surfaces); the plastic strain
-    // increment is kept for the next extrapolation.
+    // implicit one, on or inside the surfaces).
     const MaterialUpdateStats st = update_points(_trial_dt);
     if (implicit)
       *implicit = st;
     if (st.failed > 0)
       return false;
+  }
+  if (_trial_dt > 0.0)
+  {
+    // The plastic strain increment of a dynamic step, for the next
+    // extrapolation (IMPL-EX, or the extrapolated Newton predictor).
     for (std::size_t p = 0; p < np; ++p)
       for (int i = 0; i < 6; ++i)
         _dep[p][i] = _trial[p].plastic_strain[i] - _state[p].plastic_strain[i];
