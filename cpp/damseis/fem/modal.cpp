@@ -93,7 +93,11 @@ std::vector<Modes> solve_modes(Mat K, const std::vector<Mat>& Ms, int count,
   EPSSetDimensions(eps, count, PETSC_DEFAULT, PETSC_DEFAULT);
   EPSSetTarget(eps, 0.0);
   EPSSetWhichEigenpairs(eps, EPS_TARGET_MAGNITUDE);
-  EPSSetTolerances(eps, 1e-10, 200);
+  // Relative residual 1e-8: the frequencies (Rayleigh quotients, error of
+  // the order of the residual squared) equal those at 1e-10 to 13 digits;
+  // measured on the 102 m dam (43,577 cells, 2 ranks): modal stage 37.4 s
+  // at 1e-10, 31.3 s at 1e-8, 31.4 s at 1e-6.
+  EPSSetTolerances(eps, 1e-8, 200);
   ST st;
   EPSGetST(eps, &st);
   STSetType(st, STSINVERT);
