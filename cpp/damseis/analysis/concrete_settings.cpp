@@ -123,9 +123,9 @@ ConcreteSettings read_concrete_settings(const input::Case& c, double E,
       static_cast<int>(c.integer("solver.krylov_max_iterations"));
   s.static_increments = static_cast<int>(c.integer("solver.static_increments"));
   s.implex = c.string("solver.material_integration") == "implex";
-  s.newton.extrapolated_predictor = !s.implex &&
-                                    s.kind != ConcreteModelKind::elastic &&
-                                    c.boolean("solver.extrapolated_predictor");
+  // (Used only where there is plastic strain to extrapolate and the steps
+  // are implicit: run_nonlinear_seismic decides, per model of a study.)
+  s.newton.extrapolated_predictor = c.boolean("solver.extrapolated_predictor");
   return s;
 }
 } // namespace damseis::analysis

@@ -131,8 +131,10 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   Matrix K(fe.assemble_stiffness(), false);
   Matrix M(fe.assemble_mass(added), false);
   fem::ConcreteModel cm(fe, {{tags::dam, concrete.params}}, elastic, plane);
-  // (An elastic material has no plastic strain to extrapolate.)
-  cm.set_implex(concrete.implex && concrete.kind != ConcreteModelKind::elastic);
+  // An elastic material has no plastic strain to extrapolate: no IMPL-EX
+  // steps, no extrapolated predictor.
+  const bool plastic = concrete.kind != ConcreteModelKind::elastic;
+  cm.set_implex(concrete.implex && plastic);
   ConcreteSystem system(cm);
 
   // Static stage: dead weight, then the reservoir (and silt, uplift) in
@@ -177,12 +179,10 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
 
   // Dynamic stage: M a + C v + f_int(u) = F_static - M sum_c r_c a_gc(t),
   // u relative to the base, total (static included).
-  // The extrapolated predictor needs plastic strain to extrapolate, and
-  // IMPL-EX steps are extrapolated anyway.
+  // (IMPL-EX steps are extrapolated anyway.)
   dynamics::NewtonSettings newton_settings = concrete.newton;
   newton_settings.extrapolated_predictor =
-      concrete.newton.extrapolated_predictor && !concrete.implex &&
-      concrete.kind != ConcreteModelKind::elastic;
+      concrete.newton.extrapolated_predictor && !concrete.implex && plastic;
   dynamics::NonlinearNewmark newmark(M.mat(), K.mat(), modal.damping, s.scheme,
                                      system, newton_settings, s.factorization);
   const GroundMotionLoad ground(fe, s, M.mat());
