@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Benchmark of the arch_dam demo at the paper's scale (run by hand on an
 # otherwise idle machine; takes tens of minutes and several GB of memory).
-# Writes bench/results/arch-<date>.md.
-#   bench/run_arch.sh [BUILD_DIR] [RANKS] [STEPS]
+# Writes bench/results/arch[-TAG]-<date>.md.
+#   [BENCH_TAG=name] bench/run_arch.sh [BUILD_DIR] [RANKS] [STEPS]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$root/build}
@@ -10,7 +10,7 @@ ranks=${2:-2}
 steps=${3:-1000}
 out=$root/bench/results
 mkdir -p "$out"
-report=$out/arch-$(date +%Y-%m-%d).md
+report=$out/arch${BENCH_TAG:+-$BENCH_TAG}-$(date +%Y-%m-%d).md
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
