@@ -268,6 +268,21 @@ void check_tags(const ArchModel& am)
     EXPECT_GT(facet_area(m, t), 0) << "no facet with tag " << t;
 }
 
+/// Upstream and downstream face areas of the mesh against the parametric
+/// shape: chord error of facets of size he on faces of radius >= rho,
+/// relative (he / rho)^2 / 8 (as in VolumeAndFaceAreasConverge).
+void check_face_areas(const Model& m, const ArchDamGeometry& g, double he)
+{
+  const double tolA = std::pow(he / g.min_face_radius(), 2) / 8;
+  const double Au = g.face_area(-1), Ad = g.face_area(1);
+  const double eu = std::abs(facet_area(m, tags::upstream_face) - Au) / Au;
+  const double ed = std::abs(facet_area(m, tags::downstream_face) - Ad) / Ad;
+  metric("face areas: relative errors up " + std::to_string(eu) + ", down " +
+         std::to_string(ed) + " (tol " + std::to_string(tolA) + ")");
+  EXPECT_LT(eu, tolA);
+  EXPECT_LT(ed, tolA);
+}
+
 /// Checks of the joints of a model.
 void check_joints(const ArchModel& am, std::size_t njoints)
 {
@@ -519,4 +534,27 @@ TEST_F(ArchMesh, UCanyonThreeJoints)
          std::to_string(V) + " m3");
   const double he = 1.5 * 40, rho = g.min_face_radius();
   EXPECT_NEAR(v, V, (g.face_area(-1) + g.face_area(1)) * he * he / (8 * rho));
+  check_face_areas(am->model, g, he);
+}
+
+TEST_F(ArchMesh, XiaowanLikeWideVCanyon)
+{
+  // The third preset (292 m, parabolic arches, wide V canyon), meshed
+  // coarse: tags, joints, volume and face areas against the parametric
+  // shape (same tolerances as above).
+  const ArchDamDefinition d =
+      preset("xiaowan_like.toml",
+             {"mesh.size=40", "mesh.size_far=150", "joints.count=3"});
+  auto am = model("xiaowan V h=40 3 joints", d);
+  check_tags(*am);
+  check_joints(*am, 3);
+  const ArchDamGeometry g(d);
+  const double V = g.volume();
+  const double v = region_volume(am->model, tags::dam);
+  metric("xiaowan-like: " + std::to_string(am->num_cells) +
+         " cells, volume: mesh " + std::to_string(v) + " m3, reference " +
+         std::to_string(V) + " m3");
+  const double he = 1.5 * 40, rho = g.min_face_radius();
+  EXPECT_NEAR(v, V, (g.face_area(-1) + g.face_area(1)) * he * he / (8 * rho));
+  check_face_areas(am->model, g, he);
 }

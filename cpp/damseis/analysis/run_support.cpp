@@ -385,6 +385,24 @@ json seismic_summary(MPI_Comm comm, const fem::ElasticModel& fe,
         {"record", s.motion[i].record},
         {"peak_g", s.motion[i].active ? s.motion[i].peak_g : 0.0}};
   }
+  // Components driven by one record file are one fully correlated signal
+  // (only one real record ships so far): say so.
+  for (int i = 0; i < dim; ++i)
+  {
+    std::string shared;
+    for (int j = 0; j < dim; ++j)
+    {
+      if (j != i and s.motion[i].active and s.motion[j].active and
+          s.motion[i].record == s.motion[j].record)
+        shared += axis[j];
+    }
+    if (!shared.empty())
+    {
+      motion[std::string(1, axis[i])]["same_record_as"] = shared;
+      motion["note"] = "several components are scaled copies of one record "
+                       "(fully correlated input), not independent motions";
+    }
+  }
   const int steps_run = std::max(1, s.steps - t.restarted_from_step);
   return {
       {"n_cells", fe.mesh()->topology().index_map(dim)->size_global()},
