@@ -107,6 +107,8 @@ void arch_dam_schema(input::Schema& s)
             "spline points per face of a lofted section")
       .between(5, 400);
   s.boolean("mesh.optimize", "true", "-", "gmsh tetrahedron optimisation");
+  s.boolean("mesh.split_joints", "true", "-",
+            "duplicate the joint nodes (false: jointless mesh, same cells)");
 }
 //-----------------------------------------------------------------------------
 ArchDamDefinition read_arch_dam(const input::Case& c)
@@ -155,6 +157,7 @@ ArchDamDefinition read_arch_dam(const input::Case& c)
   d.mesh.sections = int(c.integer("mesh.sections"));
   d.mesh.arch_points = int(c.integer("mesh.arch_points"));
   d.mesh.optimize = c.boolean("mesh.optimize");
+  d.mesh.split_joints = c.boolean("mesh.split_joints");
   try
   {
     ArchDamGeometry g(d);

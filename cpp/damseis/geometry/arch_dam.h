@@ -117,6 +117,10 @@ struct ArchMeshOptions
   int sections = 0;     ///< lofted sections (0: automatic = 12)
   int arch_points = 17; ///< points per face spline of a section
   bool optimize = true; ///< gmsh tetrahedron optimisation (Netgen off)
+  /// Duplicate the joint nodes (true) or keep the joint surfaces as
+  /// interior, untagged facets of one conforming mesh (false: the jointless
+  /// model of the same mesh, to check that bonded joints reproduce it).
+  bool split_joints = true;
 };
 
 /// Everything that defines an arch-dam model.
