@@ -13,7 +13,7 @@
 // DGEMM / DTRSM, found with dlsym(RTLD_NEXT). Same operation; the sums are
 // taken in another order (differences at rounding level).
 // DAMSEIS_BLAS_SINGLE_COLUMN=0 in the environment turns the forwarding off
-// (for benchmarks: bench/run_arch.sh compares both).
+// (A/B timings: bench/results/arch-blas-forward-2026-11-22.md).
 #include "blas_single_column.h"
 #include <atomic>
 #include <cstddef>
