@@ -11,7 +11,10 @@ from ufl import (Coefficient, Constant, FacetNormal, FiniteElement,
                  as_vector, dot, ds, dx, grad, inner, max_value, sqrt, sym,
                  tetrahedron, tr)
 
-UPSTREAM, RESERVOIR_FLOOR = 1, 7
+UPSTREAM, RESERVOIR_FLOOR, UPSTREAM_WETTED = 1, 7, 12
+# The upstream face: one tag, or a dry part (UPSTREAM) and a wetted part
+# (UPSTREAM_WETTED) when the mesh follows the water line.
+WET = (UPSTREAM, UPSTREAM_WETTED)
 
 cell = tetrahedron
 mesh = Mesh(VectorElement("Lagrange", cell, 1))
@@ -45,10 +48,10 @@ a_stiffness = inner(sigma(du), eps(v)) * dx
 a_mass = rho * inner(du, v) * dx
 westergaard = 7.0 / 8.0 * rho_w * sqrt(H_0 * depth)
 a_added_mass = westergaard * dot(du, n) * dot(v, n) * \
-    ds(UPSTREAM, metadata={"quadrature_degree": 8})
+    ds(WET, metadata={"quadrature_degree": 8})
 
 L_gravity = rho * inner(gravity, v) * dx
-L_hydrostatic = -pressure * dot(n, v) * ds(UPSTREAM) \
+L_hydrostatic = -pressure * dot(n, v) * ds(WET) \
     - floor_on * pressure * dot(n, v) * ds(RESERVOIR_FLOOR)
 
 L_internal = inner(sigma(u), eps(v)) * dx

@@ -26,6 +26,7 @@ import numpy as np  # noqa: E402
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
 
 UPSTREAM, DOWNSTREAM, CREST, INTERFACE = 1, 2, 3, 4
+UPSTREAM_WETTED = 12  # wetted part of the upstream face (water-line meshes)
 ROCK = (5, 6, 7, 8, 9, 10, 11)
 JOINT_BASE = 100
 
@@ -55,7 +56,7 @@ def plot_model(x, ncells, facets, ftags, out):
     # Rock surface of the valley and the plateau (the far boundaries of the
     # block would hide the dam)
     rock = np.isin(ftags, (7, 8, 9))
-    dam = np.isin(ftags, (UPSTREAM, DOWNSTREAM, CREST))
+    dam = np.isin(ftags, (UPSTREAM, UPSTREAM_WETTED, DOWNSTREAM, CREST))
     ax.add_collection3d(Poly3DCollection(
         x[facets[rock]], facecolor=(0.80, 0.72, 0.60, 0.35),
         edgecolor=(0.35, 0.30, 0.25, 0.35), linewidth=0.2))
@@ -84,10 +85,10 @@ def plot_model(x, ncells, facets, ftags, out):
 
 
 def plot_joints(x, facets, ftags, out, from_upstream):
-    face = UPSTREAM if from_upstream else DOWNSTREAM
+    face = (UPSTREAM, UPSTREAM_WETTED) if from_upstream else (DOWNSTREAM,)
     fig, ax = plt.subplots(figsize=(12, 5.5))
     # Face mesh: the edges of its triangles projected on the x-z plane
-    tri = facets[ftags == face]
+    tri = facets[np.isin(ftags, face)]
     edges = np.sort(np.concatenate(
         [tri[:, [0, 1]], tri[:, [1, 2]], tri[:, [2, 0]]]), axis=1)
     edges = np.unique(edges, axis=0)

@@ -222,8 +222,8 @@ void check_tags(const ArchModel& am)
   const std::vector<std::int32_t> ext =
       dolfinx::mesh::exterior_facet_indices(topo);
   std::int64_t untagged = 0, wrong = 0;
-  const std::set<int> dam_tags = {tags::upstream_face, tags::downstream_face,
-                                  tags::crest};
+  const std::set<int> dam_tags = {tags::upstream_face, tags::upstream_wetted,
+                                  tags::downstream_face, tags::crest};
   const std::set<int> rock_tags = {
       tags::foundation_bottom,    tags::foundation_sides,
       tags::reservoir_floor,      tags::foundation_top_downstream,
@@ -489,6 +489,64 @@ TEST_F(ArchMesh, VolumeAndFaceAreasConverge)
     check_tags(*am);
     EXPECT_TRUE(am->joints.empty());
   }
+}
+
+TEST_F(ArchMesh, WaterLineSplitsTheUpstreamFace)
+{
+  // Reservoir at 70 m on the paper dam (3 joints, h = 16): the mesh follows
+  // the water line. The wetted facets (upstream_wetted) lie below it, the
+  // dry ones (upstream_face) above it; the wetted area matches the
+  // parametric face below 70 m and wetted + dry the whole face (chord-error
+  // tolerance as above); volume unchanged.
+  const double wl = 70.0, h = 16.0;
+  ArchDamDefinition d = paper_v(h, 3);
+  d.mesh.water_level = wl;
+  auto am = model("paper V h=16 3 joints, water line 70 m", d);
+  check_tags(*am);
+  check_joints(*am, 3);
+  const Model& m = am->model;
+  const auto ft = facet_tag_array(m);
+  const auto& mesh = *m.mesh;
+  const std::int32_t nf = mesh.topology().index_map(2)->size_local();
+  std::vector<std::int32_t> wet, dry;
+  for (std::int32_t f = 0; f < nf; ++f)
+  {
+    if (ft[f] == tags::upstream_wetted)
+      wet.push_back(f);
+    else if (ft[f] == tags::upstream_face)
+      dry.push_back(f);
+  }
+  auto x = mesh.geometry().x();
+  double wet_top = -1e300, dry_bottom = 1e300;
+  for (const auto& [facets, wetted] : {std::pair{&wet, true}, {&dry, false}})
+  {
+    const auto g = dolfinx::mesh::entities_to_geometry(mesh, 2, *facets, false);
+    for (std::int32_t v : g)
+    {
+      if (wetted)
+        wet_top = std::max(wet_top, x[3 * v + 2]);
+      else
+        dry_bottom = std::min(dry_bottom, x[3 * v + 2]);
+    }
+  }
+  double top = wet_top, bottom = dry_bottom;
+  MPI_Allreduce(&wet_top, &top, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+  MPI_Allreduce(&dry_bottom, &bottom, 1, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD);
+  EXPECT_NEAR(top, wl, 1e-6) << "highest wetted node on the water line";
+  EXPECT_NEAR(bottom, wl, 1e-6) << "lowest dry node on the water line";
+  const ArchDamGeometry g(d);
+  const double tolA = std::pow(1.5 * h / g.min_face_radius(), 2) / 8;
+  const double Aw = g.face_area(-1, wl), Au = g.face_area(-1);
+  const double aw = facet_area(m, tags::upstream_wetted);
+  const double ad = facet_area(m, tags::upstream_face);
+  metric("water line 70 m: wetted area " + std::to_string(aw) +
+         " m2 (reference " + std::to_string(Aw) + "), dry " +
+         std::to_string(ad) + " m2, whole face reference " +
+         std::to_string(Au) + " m2");
+  EXPECT_NEAR(aw, Aw, tolA * Aw);
+  EXPECT_NEAR(aw + ad, Au, tolA * Au);
+  EXPECT_GT(ad, 0.05 * Au);
+  EXPECT_NEAR(region_volume(m, tags::dam), g.volume(), 0.02 * g.volume());
 }
 
 TEST_F(ArchMesh, VCanyonThreeJoints)

@@ -294,7 +294,7 @@ damseis::analysis::SeismicSettings section_settings(double dt, double duration)
   s.output_every = 100000;
   s.crest_point = {0.0, 103.0, 0};
   s.base_point = {0.0, 0.0, 0};
-  s.faces = {{"upstream", tags::upstream_face}};
+  s.faces = {{"upstream", {tags::upstream_face}}};
   s.plots = false;
   return s;
 }

@@ -43,6 +43,9 @@ ArchDamConfig read_arch_dam_config(const input::Case& c)
 {
   ArchDamConfig a;
   a.geometry = geometry::read_arch_dam(c);
+  // The mesh follows the water line: the wetted part of the upstream face
+  // gets its own tag (upstream_wetted).
+  a.geometry.mesh.water_level = c.real("reservoir.level");
   a.order = static_cast<int>(c.integer("mesh.order"));
   a.concrete = {c.real("material.E"), c.real("material.nu"),
                 c.real("material.rho")};
@@ -54,8 +57,8 @@ ArchDamConfig read_arch_dam_config(const input::Case& c)
   const auto base = shape.face_point(0.0, 0.0, -1);
   a.seismic =
       read_seismic_settings(c, arch_dam_directions(), 3, h, crest, base);
-  a.seismic.faces = {{"upstream", tags::upstream_face},
-                     {"downstream", tags::downstream_face}};
+  a.seismic.faces = {{"upstream", {tags::upstream_face, tags::upstream_wetted}},
+                     {"downstream", {tags::downstream_face}}};
   return a;
 }
 } // namespace damseis::analysis

@@ -164,8 +164,8 @@ GravityDamConfig read_gravity_dam_config(const input::Case& c)
   if (g.uplift_on && g.uplift.head_downstream > g.uplift.head_upstream)
     c.fail("uplift.tailwater", "is above the reservoir",
            "a tailwater below reservoir.level");
-  g.seismic.faces = {{"upstream", tags::upstream_face},
-                     {"downstream", tags::downstream_face}};
+  g.seismic.faces = {{"upstream", {tags::upstream_face}},
+                     {"downstream", {tags::downstream_face}}};
   return g;
 }
 } // namespace damseis::analysis

@@ -154,8 +154,9 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   const auto dam_cells = region_cells(model, tags::dam);
   results::StressEnvelope envelope(*fe.S(), dam_cells);
   std::vector<std::vector<std::int32_t>> face_pts;
-  for (const auto& [name, tag] : s.faces)
-    face_pts.push_back(results::face_points(*fe.S(), *model.facet_tags, tag));
+  for (const auto& [name, face_tags] : s.faces)
+    face_pts.push_back(
+        results::face_points(*fe.S(), *model.facet_tags, face_tags));
 
   results::PointProbe crest(*fe.V(), s.crest_point);
   results::PointProbe base(*fe.V(), s.base_point);

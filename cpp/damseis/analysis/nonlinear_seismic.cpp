@@ -214,9 +214,9 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   ScalarEnvelope syy_max(n_pts, -HUGE_VAL), syy_min(n_pts, -HUGE_VAL);
   std::vector<double> syy(n_pts);
   std::vector<std::vector<std::int32_t>> face_pts;
-  for (const auto& [name, tag] : s.faces)
+  for (const auto& [name, face_tags] : s.faces)
     face_pts.push_back(
-        results::face_points(*Sq, *model.facet_tags, tag, false));
+        results::face_points(*Sq, *model.facet_tags, face_tags, false));
 
   results::PointProbe crest(*fe.V(), s.crest_point);
   results::PointProbe base(*fe.V(), s.base_point);

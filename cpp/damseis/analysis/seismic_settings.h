@@ -50,8 +50,8 @@ struct SeismicSettings
   bool stress_total = true; ///< envelopes of static + seismic stress
   std::array<double, 3> crest_point = {0, 0, 0};
   std::array<double, 3> base_point = {0, 0, 0};
-  /// Faces whose envelope extremes are reported: (name, facet tag).
-  std::vector<std::pair<std::string, int>> faces;
+  /// Faces whose envelope extremes are reported: (name, facet tags).
+  std::vector<std::pair<std::string, std::vector<int>>> faces;
   int checkpoint_every = 0; ///< steps between checkpoints; 0: none
   bool restart = false;     ///< resume from the output folder's checkpoint
   int stop_at_step = 0;     ///< checkpoint and stop there (0: run to the end)

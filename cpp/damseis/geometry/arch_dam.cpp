@@ -465,7 +465,7 @@ double ArchDamGeometry::volume() const
                           height(), z_cuts(_def, _canyon), 24);
 }
 //-----------------------------------------------------------------------------
-double ArchDamGeometry::face_area(int side) const
+double ArchDamGeometry::face_area(int side, double z_top) const
 {
   const double h = 1e-7, hz = 1e-6 * height();
   auto row = [&](double z)
@@ -496,7 +496,8 @@ double ArchDamGeometry::face_area(int side) const
     };
     return integrate_pieces(f, a, b, cuts, 16);
   };
-  return integrate_pieces(row, 0, height(), z_cuts(_def, _canyon), 24);
+  const double top = z_top >= 0 ? std::min(z_top, height()) : height();
+  return integrate_pieces(row, 0, top, z_cuts(_def, _canyon), 24);
 }
 //-----------------------------------------------------------------------------
 double ArchDamGeometry::min_face_radius() const

@@ -121,6 +121,10 @@ struct ArchMeshOptions
   /// interior, untagged facets of one conforming mesh (false: the jointless
   /// model of the same mesh, to check that bonded joints reproduce it).
   bool split_joints = true;
+  /// Reservoir level [m above the dam base]. Strictly between 0 and the
+  /// height: the dam is cut at this elevation (the mesh follows the water
+  /// line) and the upstream face below it is tagged upstream_wetted.
+  double water_level = 0;
 };
 
 /// Everything that defines an arch-dam model.
@@ -212,10 +216,11 @@ public:
 
   /// Area of the ring at z inside the canyon (Green's theorem, Gauss).
   double section_area(double z) const;
-  /// Dam volume, upstream (side -1) / downstream (+1) face areas, crest
-  /// area: independent quadrature of the parametric shape.
+  /// Dam volume, upstream (side -1) / downstream (+1) face areas (below
+  /// z_top, if given: e.g. the wetted part), crest area: independent
+  /// quadrature of the parametric shape.
   double volume() const;
-  double face_area(int side) const;
+  double face_area(int side, double z_top = -1) const;
   double crest_area() const { return section_area(height()); }
   /// Smallest radius of curvature of the faces (horizontal) over the dam.
   double min_face_radius() const;

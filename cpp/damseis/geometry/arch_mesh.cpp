@@ -258,13 +258,9 @@ MeshArrays build_on_root(const ArchDamGeometry& g, bool verbose)
                              " dam volumes (expected 1 and 1)");
 
   stage("valley, foundation and dam booleans");
-  // Joints: cut the dam with the joint planes, drop the plane parts outside
-  const std::vector<JointPlane> planes = g.joint_planes();
-  if (!planes.empty())
+  // Cuts the dam blocks with tool surfaces; drops the tool parts outside.
+  auto cut_dam = [&](const gmsh::vectorpair& tools)
   {
-    gmsh::vectorpair tools;
-    for (const JointPlane& j : planes)
-      tools.push_back({2, add_joint_surface(g, j, -0.1 * H, 1.1 * H)});
     gmsh::vectorpair out;
     occ::fragment(dam, tools, out, map);
     dam.clear();
@@ -281,12 +277,30 @@ MeshArrays build_on_root(const ArchDamGeometry& g, bool verbose)
         drop.push_back({d, t});
     }
     occ::remove(drop, true);
+  };
+  // Joints: cut the dam with the joint planes
+  const std::vector<JointPlane> planes = g.joint_planes();
+  if (!planes.empty())
+  {
+    gmsh::vectorpair tools;
+    for (const JointPlane& j : planes)
+      tools.push_back({2, add_joint_surface(g, j, -0.1 * H, 1.1 * H)});
+    cut_dam(tools);
     if (dam.size() != planes.size() + 1)
       throw std::runtime_error(
           "arch dam: " + std::to_string(planes.size()) +
           " joint planes cut the dam into " + std::to_string(dam.size()) +
           " blocks (expected " + std::to_string(planes.size() + 1) +
           "); joints too close to each other or to the abutments?");
+  }
+  // Water line: cut the dam blocks at the reservoir level, so that the
+  // mesh follows it and the wetted part of the upstream face has its tag.
+  const double wl = mo.water_level;
+  const bool water_line = wl > 1e-3 * H and wl < (1 - 1e-3) * H;
+  if (water_line)
+  {
+    cut_dam({{2, occ::addRectangle(e.x0 - 1, e.y0 - 1, wl, e.x1 - e.x0 + 2,
+                                   e.y1 - e.y0 + 2)}});
   }
   stage("joint planes");
   gmsh::vectorpair out;
@@ -321,6 +335,9 @@ MeshArrays build_on_root(const ArchDamGeometry& g, bool verbose)
     int tag = -1;
     if (ndam > 0)
       dam_surfaces.push_back(s);
+    if (water_line and up.size() == 2 and ndam == 2 and bz1 - bz0 < 1e-4 * H and
+        std::abs(cz - wl) < 1e-4 * H)
+      continue; // the water-line cut inside the dam: interior, untagged
     if (up.size() == 2 and ndam == 2)
     {
       // Joint: the plane through the centre of mass
@@ -352,6 +369,8 @@ MeshArrays build_on_root(const ArchDamGeometry& g, bool verbose)
         const double z = std::clamp(p[2], 0.0, H);
         tag = g.offset(z, p[0], p[1])[0] < 0 ? tags::upstream_face
                                              : tags::downstream_face;
+        if (tag == tags::upstream_face and water_line and cz < wl)
+          tag = tags::upstream_wetted;
       }
     }
     else

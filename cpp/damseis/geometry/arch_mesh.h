@@ -50,6 +50,11 @@ struct ArchModel
 /// downstream (valley rock downstream), foundation_top (plateau),
 /// foundation_bottom, foundation_sides (x ends), foundation_upstream,
 /// foundation_downstream (y ends), joint_side1(k) / joint_side2(k).
+/// With a water level (ArchMeshOptions::water_level, which the arch_dam
+/// demo sets from reservoir.level) the dam is also cut at that elevation:
+/// the mesh follows the water line, the upstream face below it is tagged
+/// upstream_wetted and upstream_face keeps the dry part above it (the
+/// forms load both tags).
 /// Cell tags: dam, foundation. Joint nodes are duplicated except on the
 /// dam-foundation interface (see split_joints).
 ///

@@ -9,8 +9,8 @@ namespace damseis::results
 {
 std::vector<std::int32_t>
 face_points(const dolfinx::fem::FunctionSpace& S,
-            const dolfinx::mesh::MeshTags<std::int32_t>& facet_tags, int tag,
-            bool vertex_points)
+            const dolfinx::mesh::MeshTags<std::int32_t>& facet_tags,
+            const std::vector<int>& tags, bool vertex_points)
 {
   auto mesh = S.mesh();
   const int tdim = mesh->topology().dim();
@@ -27,7 +27,8 @@ face_points(const dolfinx::fem::FunctionSpace& S,
   std::vector<std::int32_t> points;
   for (std::size_t i = 0; i < facet_tags.indices().size(); ++i)
   {
-    if (facet_tags.values()[i] != tag)
+    if (std::find(tags.begin(), tags.end(), facet_tags.values()[i]) ==
+        tags.end())
       continue;
     const std::int32_t f = facet_tags.indices()[i];
     auto fv = f_to_v->links(f);

@@ -9,12 +9,14 @@
 namespace damseis::results
 {
 /// Owned points of the stress-point space S that lie on the facets tagged
-/// `tag`: for P2 models (points at cell vertices) the vertices of those
-/// facets, for P1 models (one point per cell) the centres of the adjacent
-/// cells. Sorted, unique. With `vertex_points` false (quadrature points
-/// inside the cells): all points of the adjacent cells.
+/// with any of `tags` (a face may carry several, e.g. the wetted and the dry
+/// part of an arch dam's upstream face): for P2 models (points at cell
+/// vertices) the vertices of those facets, for P1 models (one point per cell)
+/// the centres of the adjacent cells. Sorted, unique. With `vertex_points`
+/// false (quadrature points inside the cells): all points of the adjacent
+/// cells.
 std::vector<std::int32_t>
 face_points(const dolfinx::fem::FunctionSpace& S,
-            const dolfinx::mesh::MeshTags<std::int32_t>& facet_tags, int tag,
-            bool vertex_points = true);
+            const dolfinx::mesh::MeshTags<std::int32_t>& facet_tags,
+            const std::vector<int>& tags, bool vertex_points = true);
 } // namespace damseis::results
