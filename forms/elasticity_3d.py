@@ -14,7 +14,7 @@ from ufl import (Coefficient, Constant, FacetNormal, FiniteElement,
 UPSTREAM, RESERVOIR_FLOOR, UPSTREAM_WETTED = 1, 7, 12
 # The upstream face: one tag, or a dry part (UPSTREAM) and a wetted part
 # (UPSTREAM_WETTED) when the mesh follows the water line.
-WET = (UPSTREAM, UPSTREAM_WETTED)
+UPSTREAM_FACE = (UPSTREAM, UPSTREAM_WETTED)
 
 cell = tetrahedron
 mesh = Mesh(VectorElement("Lagrange", cell, 1))
@@ -48,10 +48,10 @@ a_stiffness = inner(sigma(du), eps(v)) * dx
 a_mass = rho * inner(du, v) * dx
 westergaard = 7.0 / 8.0 * rho_w * sqrt(H_0 * depth)
 a_added_mass = westergaard * dot(du, n) * dot(v, n) * \
-    ds(WET, metadata={"quadrature_degree": 8})
+    ds(UPSTREAM_FACE, metadata={"quadrature_degree": 8})
 
 L_gravity = rho * inner(gravity, v) * dx
-L_hydrostatic = -pressure * dot(n, v) * ds(WET) \
+L_hydrostatic = -pressure * dot(n, v) * ds(UPSTREAM_FACE) \
     - floor_on * pressure * dot(n, v) * ds(RESERVOIR_FLOOR)
 
 L_internal = inner(sigma(u), eps(v)) * dx
