@@ -31,13 +31,13 @@ enum Boundary : int
   // max); reservoir_floor is the rock surface of the valley upstream of the
   // dam (floor and banks) and foundation_top_downstream the valley surface
   // downstream of it.
-  foundation_top = 9,       ///< 3D: rock plateau at the crest elevation
-  foundation_upstream = 10, ///< 3D: far boundary y = y_min (upstream end)
-  foundation_downstream =
-      11, ///< 3D: far boundary y = y_max
-          /// 3D: the part of the upstream face below the reservoir level (arch
-          /// meshes built with a water level; upstream_face is then the dry
-          /// part above it, and the mesh has edges along the water line).
+  foundation_top = 9,         ///< 3D: rock plateau at the crest elevation
+  foundation_upstream = 10,   ///< 3D: far boundary y = y_min (upstream end)
+  foundation_downstream = 11, ///< 3D: far boundary y = y_max
+
+  /// 3D: the part of the upstream face below the reservoir level (arch
+  /// meshes built with a water level; upstream_face is then the dry part
+  /// above it, and the mesh has edges along the water line).
   upstream_wetted = 12,
   /// 3D: contraction joints: joint k (0 for label A) has the facet tags
   /// joint_side1(k) = 100 + 2k (side 1, the block on its left, smaller x)
