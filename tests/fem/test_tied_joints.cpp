@@ -463,19 +463,7 @@ TEST_P(TiedJoints, EqualJointlessMesh)
   // (a) jointless: the arrays as they are (the joint facets are interior:
   // their tag is dropped)
   Arrays a = block(foundation);
-  {
-    Arrays keep;
-    for (std::size_t f = 0; f < a.facet_values.size(); ++f)
-    {
-      if (a.facet_values[f] == tags::joint_side1(0))
-        continue;
-      keep.facets.insert(keep.facets.end(), &a.facets[3 * f],
-                         &a.facets[3 * f] + 3);
-      keep.facet_values.push_back(a.facet_values[f]);
-    }
-    a.facets = std::move(keep.facets);
-    a.facet_values = std::move(keep.facet_values);
-  }
+  geometry::untag_joint_facets(a.facets, a.facet_values);
   const Model ma = geometry::model_from_arrays(
       MPI_COMM_WORLD, a.x, a.cells, a.cell_values, a.facets, a.facet_values);
 

@@ -531,20 +531,8 @@ MeshArrays build_on_root(const ArchDamGeometry& g, bool verbose)
 
   if (!def.mesh.split_joints)
   {
-    // Jointless model of the same mesh: the joint facets are interior and
-    // lose their tags.
-    std::vector<std::int64_t> facets;
-    std::vector<std::int32_t> values;
-    for (std::size_t f = 0; f < m.facet_values.size(); ++f)
-    {
-      if (tags::is_joint_tag(m.facet_values[f]))
-        continue;
-      facets.insert(facets.end(), m.facets.begin() + 3 * f,
-                    m.facets.begin() + 3 * f + 3);
-      values.push_back(m.facet_values[f]);
-    }
-    m.facets = std::move(facets);
-    m.facet_values = std::move(values);
+    // Jointless model of the same mesh.
+    untag_joint_facets(m.facets, m.facet_values);
     return m;
   }
 

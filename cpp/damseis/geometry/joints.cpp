@@ -1,5 +1,6 @@
 // Contraction joints with duplicated nodes.
 #include "joints.h"
+#include "tags.h"
 
 #include <algorithm>
 #include <cmath>
@@ -207,6 +208,22 @@ std::vector<JointPairs> split_joints(std::vector<double>& x,
   return out;
 }
 //-----------------------------------------------------------------------------
+void untag_joint_facets(std::vector<std::int64_t>& facets,
+                        std::vector<std::int32_t>& facet_values)
+{
+  std::vector<std::int64_t> kept;
+  std::vector<std::int32_t> values;
+  for (std::size_t f = 0; f < facet_values.size(); ++f)
+  {
+    if (tags::is_joint_tag(facet_values[f]))
+      continue;
+    kept.insert(kept.end(), facets.begin() + 3 * f, facets.begin() + 3 * f + 3);
+    values.push_back(facet_values[f]);
+  }
+  facets = std::move(kept);
+  facet_values = std::move(values);
+}
+
 std::vector<std::int32_t>
 local_geometry_nodes(const dolfinx::mesh::Mesh& mesh,
                      std::span<const std::int64_t> input_indices)

@@ -81,6 +81,14 @@ std::vector<JointPairs> split_joints(std::vector<double>& x,
                                      std::span<const JointSplitSpec> joints,
                                      int split_region, int bonded_tag);
 
+/// @brief The jointless model of the same mesh arrays: removes the joint
+/// facets (tags::is_joint_tag) from the tagged facets, which leaves them
+/// interior and untagged (serial, on mesh arrays; before split_joints).
+/// @param[in,out] facets Triangles (3 node indices each).
+/// @param[in,out] facet_values Tag of each triangle.
+void untag_joint_facets(std::vector<std::int64_t>& facets,
+                        std::vector<std::int32_t>& facet_values);
+
 /// @brief Local geometry node index of each input node index (owned or
 /// ghost on this rank), -1 where the node is not on this rank.
 std::vector<std::int32_t>
