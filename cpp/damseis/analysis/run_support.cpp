@@ -180,17 +180,16 @@ ModalResult modal_and_damping(Mat K, Mat M, Mat M_dry, const SeismicSettings& s,
                               const std::function<void(KSP)>& with_K_factors)
 {
   const auto t0 = std::chrono::steady_clock::now();
-  double other = 0.0; // time in with_K_factors
+  ModalResult r;
   auto timed = [&](KSP ksp)
   {
     const auto t1 = std::chrono::steady_clock::now();
     with_K_factors(ksp);
-    other += seconds_since(t1);
+    r.with_K_factors_seconds += seconds_since(t1);
   };
   std::function<void(KSP)> callback;
   if (with_K_factors)
     callback = timed;
-  ModalResult r;
   if (M_dry)
   {
     std::vector<fem::Modes> both =
@@ -203,7 +202,7 @@ ModalResult modal_and_damping(Mat K, Mat M, Mat M_dry, const SeismicSettings& s,
     r.modes = std::move(fem::solve_modes(K, {M}, s.modes, callback)[0]);
     r.dry_hz = r.modes.frequencies_hz;
   }
-  r.seconds = seconds_since(t0) - other;
+  r.seconds = seconds_since(t0) - r.with_K_factors_seconds;
   if (s.damping_frequencies_hz.size() == 2)
   {
     r.f1 = s.damping_frequencies_hz[0];

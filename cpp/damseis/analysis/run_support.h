@@ -78,8 +78,8 @@ private:
 
 /// Modal analysis (with the added mass in M, and dry if `M_dry`) and the
 /// Rayleigh damping of the settings; prints the frequencies (rank 0).
-/// `with_K_factors`: see fem::solve_modes (its time is not counted in
-/// `seconds`).
+/// `with_K_factors`: see fem::solve_modes (its time is reported in
+/// `with_K_factors_seconds`, not in `seconds`).
 struct ModalResult
 {
   fem::Modes modes;
@@ -87,6 +87,7 @@ struct ModalResult
   double f1 = 0.0, f2 = 0.0;
   dynamics::RayleighDamping damping;
   double seconds = 0.0;
+  double with_K_factors_seconds = 0.0;
 };
 ModalResult
 modal_and_damping(Mat K, Mat M, Mat M_dry, const SeismicSettings& s,
