@@ -320,7 +320,6 @@ MeshArrays build_on_root(const ArchDamGeometry& g, bool verbose)
   std::map<int, std::vector<int>> groups;
   gmsh::vectorpair surfaces;
   gmsh::model::getEntities(surfaces, 2);
-  std::vector<int> dam_surfaces;
   for (const auto& [d, s] : surfaces)
   {
     std::vector<int> up, down;
@@ -333,8 +332,6 @@ MeshArrays build_on_root(const ArchDamGeometry& g, bool verbose)
     double cx, cy, cz;
     occ::getCenterOfMass(2, s, cx, cy, cz);
     int tag = -1;
-    if (ndam > 0)
-      dam_surfaces.push_back(s);
     if (water_line and up.size() == 2 and ndam == 2 and bz1 - bz0 < 1e-4 * H and
         std::abs(cz - wl) < 1e-4 * H)
       continue; // the water-line cut inside the dam: interior, untagged
