@@ -9,6 +9,9 @@
 //    internal force (algorithms.md 1.9 asks 1e-6 for the point tangent; the
 //    structural check is limited by the O(h^2) truncation and by points
 //    that change active set inside the difference interval, so 1e-4).
+//  - the tangent change added cell by cell (add_tangent_change, used by the
+//    Newton iteration) equals the fully assembled tangent minus K0: the
+//    same kernel on the same values, so round-off (1e-12 relative).
 // Koyna section, 8 m mesh, rigid base; plane stress and plane strain.
 #include "fem_test_support.h"
 
@@ -155,6 +158,50 @@ TEST(ConcreteModel, TangentMatchesFiniteDifferenceOfInternalForce)
       }
       EXPECT_LT(worst, 1e-4);
     }
+  }
+}
+
+TEST(ConcreteModel, TangentChangeMatchesFullAssembly)
+{
+  for (PlaneMode plane : {PlaneMode::plane_stress, PlaneMode::plane_strain})
+  {
+    ConcreteCase s = make(material::Mode::viscoplastic, plane, 0.5e6);
+    PVec u = loading(*s.fe, 9.0);
+    Function uf(s.fe->V());
+    to_function(u.vec(), uf);
+    const auto stats = s.cm->update(uf, 0.01);
+    ASSERT_EQ(stats.failed, 0);
+    ASSERT_GT(stats.inelastic, 10) << "the load must make points yield";
+    ASSERT_LT(stats.inelastic, stats.points) << "some cells must stay elastic";
+    PMat K0 = own(s.fe->assemble_stiffness());
+    PMat Kt = own(s.cm->assemble_tangent());
+    // A = 3 K0 + 2.5 (K_T - K0), by the change alone.
+    const double scale = 2.5;
+    PMat A = own(s.fe->assemble_stiffness());
+    MatScale(A.mat(), 3.0);
+    s.cm->add_tangent_change(A.mat(), scale);
+    // Reference from the full assembly: 0.5 K0 + 2.5 K_T, but the fixed rows
+    // and columns (identity in both K0 and K_T) get nothing from the change.
+    PMat B = own(s.fe->assemble_stiffness());
+    MatScale(B.mat(), 3.0);
+    MatAXPY(B.mat(), scale, Kt.mat(), SAME_NONZERO_PATTERN);
+    MatAXPY(B.mat(), -scale, K0.mat(), SAME_NONZERO_PATTERN);
+    double change = 0, k = 0;
+    PMat D = own(s.fe->assemble_stiffness());
+    MatCopy(Kt.mat(), D.mat(), SAME_NONZERO_PATTERN);
+    MatAXPY(D.mat(), -1.0, K0.mat(), SAME_NONZERO_PATTERN);
+    MatNorm(D.mat(), NORM_FROBENIUS, &change);
+    MatAXPY(A.mat(), -1.0, B.mat(), SAME_NONZERO_PATTERN);
+    double diff = 0;
+    MatNorm(A.mat(), NORM_FROBENIUS, &diff);
+    MatNorm(K0.mat(), NORM_FROBENIUS, &k);
+    print_metric(
+        fmt(plane == PlaneMode::plane_stress ? "plane stress" : "plane strain",
+            ": ", stats.inelastic, " of ", stats.points,
+            " points inelastic, |K_T - K0| / |K0| = ", change / k,
+            ", change vs full assembly: ", diff / k));
+    EXPECT_GT(change / k, 1e-3) << "the tangent must differ from K0";
+    EXPECT_LT(diff / k, 1e-12);
   }
 }
 } // namespace

@@ -65,6 +65,11 @@ public:
   /// Tangent of the last trial into A (the pattern of K0; fixed rows and
   /// columns identity).
   virtual void tangent(Mat A) = 0;
+  /// Adds scale (K_T - K0) of the last trial to A (assembled, the pattern
+  /// of K0) and finishes the assembly; false, with A untouched, if the
+  /// system cannot (then tangent() is used). Cheaper than tangent() where
+  /// K_T differs from K0 in a few cells.
+  virtual bool add_tangent_change(Mat, double) { return false; }
   /// The last trial becomes the committed state. False if that fails (an
   /// IMPL-EX state update at a point): the committed state is unchanged
   /// and the step is cut.

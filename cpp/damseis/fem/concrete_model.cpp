@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <damseis/material/plane_stress.h>
 #include <dolfinx/common/IndexMap.h>
+#include <dolfinx/fem/assemble_matrix_impl.h>
 #include <dolfinx/fem/assembler.h>
 #include <dolfinx/fem/petsc.h>
 #include <dolfinx/fem/utils.h>
@@ -341,6 +342,7 @@ MaterialUpdateStats ConcreteModel::update_points(double dt)
   // shortens the step, or the step is cut): the update stops at the first
   // failure of an owned point (a ghost point's failure is its owner's).
   bool failed = false;
+  _tangent_cells.clear();
   for (std::int32_t c = 0; c < _num_cells && !failed; ++c)
   {
     const auto& m =
@@ -357,6 +359,11 @@ MaterialUpdateStats ConcreteModel::update_points(double dt)
           sig[3 * dof + i] = _trial[p].stress[plane_index[i]];
         counts[0] += c < _num_owned_cells;
         continue;
+      }
+      if (c < _num_owned_cells &&
+          (_tangent_cells.empty() || _tangent_cells.back() != c))
+      {
+        _tangent_cells.push_back(c);
       }
       int maps = 0;
       std::int64_t its = 0;
@@ -418,6 +425,7 @@ void ConcreteModel::extrapolate_stress(double dt)
   // r = 0 in the first dynamic step (the static stage's increments are not
   // a rate).
   const double r = _dt_last > 0.0 ? dt / _dt_last : 0.0;
+  _tangent_cells.clear(); // the extrapolated tangent is elastic
   std::span<double> sig = _sig->x()->mutable_array();
   std::span<double> ct = _Ct->x()->mutable_array();
   for (std::int32_t c = 0; c < _num_cells; ++c)
@@ -558,6 +566,52 @@ void ConcreteModel::assemble_tangent(Mat A) const
   MatAssemblyEnd(A, MAT_FLUSH_ASSEMBLY);
   dfem::set_diagonal(dolfinx::la::petsc::Matrix::set_fn(A, INSERT_VALUES),
                      *_fe.V(), _fe.bcs(), 1.0);
+  MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY);
+  MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY);
+}
+
+void ConcreteModel::add_tangent_change(Mat A, double scale) const
+{
+  const dfem::FunctionSpace& V = *_fe.V();
+  const dfem::DofMap& dofmap = *V.dofmap();
+  const int bs = dofmap.bs();
+  if (_bc_marker.empty())
+  {
+    const auto& map = *dofmap.index_map;
+    _bc_marker.assign(bs * (map.size_local() + map.num_ghosts()), 0);
+    for (const auto& bc : _fe.bcs())
+      bc->mark_dofs(_bc_marker);
+  }
+  // The tangent coefficient of the listed cells minus the elastic one,
+  // packed per cell as DOLFINx packs a quadrature coefficient (the cell's
+  // points in dofmap order, 9 values each); the form is linear in it.
+  const int cstride = 9 * _nq;
+  _coeff_work.resize(_tangent_cells.size() * cstride);
+  std::span<const double> ct = _Ct->x()->array();
+  for (std::size_t i = 0; i < _tangent_cells.size(); ++i)
+  {
+    const std::int32_t c = _tangent_cells[i];
+    const auto& ce = _ct_elastic[_cell_material[c]];
+    for (int q = 0; q < _nq; ++q)
+    {
+      const std::int32_t d = _dof_c[static_cast<std::size_t>(c) * _nq + q];
+      for (int k = 0; k < 9; ++k)
+        _coeff_work[i * cstride + 9 * q + k] = scale * (ct[9 * d + k] - ce[k]);
+    }
+  }
+  const auto ids = _a->integral_ids(dfem::IntegralType::cell);
+  if (ids.size() != 1 || _a->coefficient_offsets().back() != cstride)
+    throw std::logic_error("tangent form: one cell integral of Ct expected");
+  const auto& element = *V.element();
+  dfem::impl::assemble_cells(
+      dolfinx::la::petsc::Matrix::set_block_fn(A, ADD_VALUES),
+      _fe.mesh()->geometry(), std::span<const std::int32_t>(_tangent_cells),
+      element.get_dof_transformation_function<double>(), dofmap.list(), bs,
+      element.get_dof_transformation_to_transpose_function<double>(),
+      dofmap.list(), bs, _bc_marker, _bc_marker,
+      _a->kernel(dfem::IntegralType::cell, ids.front()),
+      std::span<const double>(_coeff_work), cstride, std::span<const double>(),
+      std::span<const std::uint32_t>());
   MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY);
   MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY);
 }

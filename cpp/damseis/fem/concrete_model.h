@@ -88,6 +88,14 @@ public:
   Mat assemble_tangent() const;
   /// Assembles the tangent into an existing matrix of that pattern.
   void assemble_tangent(Mat A) const;
+  /// Adds scale (K_T - K0) to the assembled matrix A (the pattern of
+  /// ElasticModel::assemble_stiffness), K_T the tangent of the trial state
+  /// and K0 the elastic stiffness, and finishes the assembly. Only the
+  /// cells with a point off the elastic fast path in the last update
+  /// contribute (K_T = K0 on all others), so this costs a fraction of
+  /// assemble_tangent() while few points are inelastic. Fixed rows and
+  /// columns get nothing. Collective.
+  void add_tangent_change(Mat A, double scale) const;
 
   /// Number of quadrature points per cell.
   int points_per_cell() const { return _nq; }
@@ -185,5 +193,11 @@ private:
   /// coefficients. Collective.
   MaterialUpdateStats update_points(double dt);
   std::int64_t _num_owned_points = 0; ///< all ranks
+  /// Owned cells whose trial tangent may differ from the elastic one (a
+  /// point left the elastic fast path in the last update).
+  std::vector<std::int32_t> _tangent_cells;
+  /// Dirichlet markers of V's dofs (blocked layout), made on first use.
+  mutable std::vector<std::int8_t> _bc_marker;
+  mutable std::vector<double> _coeff_work;
 };
 } // namespace damseis::fem
