@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <damseis/fem/duplicate_matrix.h>
 #include <functional>
 #include <string>
 #include <vector>
@@ -195,7 +196,7 @@ StepReport solve_static(NonlinearSystem& system, Mat K0, Vec F_from, Vec F_to,
                                settings.krylov_max_iterations);
   initial.factorize(K0);
   Mat J;
-  MatDuplicate(K0, MAT_DO_NOT_COPY_VALUES, &J);
+  J = fem::duplicate_matrix(K0, MAT_DO_NOT_COPY_VALUES);
   Vec F, R, du, ut, fint;
   for (Vec* x : {&F, &R, &du, &ut, &fint})
     VecDuplicate(u, x);
@@ -319,7 +320,7 @@ const fem::DirectSolver& NonlinearNewmark::initial_solver(int level,
   const double a0 = 1.0 / (beta * dt * dt), a1 = gamma / (beta * dt);
   // J0 = a0 M + (1 + alpha)(a1 C + K0).
   Mat J0;
-  MatDuplicate(_K0, MAT_COPY_VALUES, &J0);
+  J0 = fem::duplicate_matrix(_K0, MAT_COPY_VALUES);
   MatScale(J0, w * (1.0 + a1 * _damping.b_stiffness));
   MatAXPY(J0, a0 + w * a1 * _damping.a_mass, _M, SUBSET_NONZERO_PATTERN);
   MPI_Comm comm;
@@ -333,7 +334,7 @@ const fem::DirectSolver& NonlinearNewmark::initial_solver(int level,
   }
   auto& entry = _initial[level];
   entry.J0 = J0;
-  MatDuplicate(J0, MAT_COPY_VALUES, &entry.rest);
+  entry.rest = fem::duplicate_matrix(J0, MAT_COPY_VALUES);
   MatAXPY(entry.rest, -w, _K0, SAME_NONZERO_PATTERN);
   entry.solver = std::move(solver);
   _level = &entry;
@@ -396,7 +397,7 @@ bool NonlinearNewmark::solve_step(double dt, Vec f_next, int level,
   const double aM = _damping.a_mass, bK = _damping.b_stiffness;
   const fem::DirectSolver& J0 = initial_solver(level, report);
   if (!_J)
-    MatDuplicate(_K0, MAT_DO_NOT_COPY_VALUES, &_J);
+    _J = fem::duplicate_matrix(_K0, MAT_DO_NOT_COPY_VALUES);
 
   // Constant part of the HHT residual:
   // g = -alpha (C v + f_int) - (1 + alpha) f' + alpha f.

@@ -1,5 +1,6 @@
 #include "modal.h"
 #include "direct_solver.h"
+#include "duplicate_matrix.h"
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -121,7 +122,7 @@ std::vector<Modes> solve_modes(Mat K, const std::vector<Mat>& Ms, int count,
     for (std::size_t i = 0; i < Ms.size(); ++i)
     {
       if (i == 0)
-        MatDuplicate(Ms[0], MAT_COPY_VALUES, &W);
+        W = duplicate_matrix(Ms[0], MAT_COPY_VALUES);
       else
         MatCopy(Ms[i], W, DIFFERENT_NONZERO_PATTERN);
       EPSSetOperators(eps, K, W);
