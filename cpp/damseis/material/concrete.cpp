@@ -365,33 +365,35 @@ void HtcConcrete::reduced(const T* y, const int* ids, const T* str, double kcn,
   using std::sqrt;
   // Internal variables: kappa itself, or (power rate law) the log-rate
   // y = log(1 + kappa_dot / kdot0), which makes the consistency equation
-  // nearly linear in the unknown (R = exp(delta y)).
-  T kc, kt, kcd, ktd;
+  // nearly linear in the unknown: R = (1 + kappa_dot / kdot0)^delta =
+  // exp(delta y) (no pow; surfaces() clamps 1 + kappa_dot / kdot0 at 1e-3,
+  // the same here), and e^-y of the rate row is 1 / e^y.
+  T kc, kt, Rc(1.0), Rt(1.0), iec(1.0), iet(1.0);
+  auto log_rate =
+      [&](const RateFunction& f, const T& yk, double kn, T& k, T& R, T& ie)
+  {
+    const T ey = exp(yk);
+    k = kn + (dt * f.kdot0) * (ey - 1.0);
+    if (rates)
+      R = value(ey) >= 1.0 - 0.999 ? T(exp(f.delta * yk))
+                                   : T(std::pow(1.0 - 0.999, f.delta));
+    ie = 1.0 / ey;
+  };
+  auto plain = [&](const RateFunction& f, const T& yk, double kn, T& k, T& R)
+  {
+    k = yk;
+    if (rates)
+      R = f(vmax(T((k - kn) / dt), T(-0.999 * f.kdot0)));
+  };
   if (lc)
-  {
-    kcd = d_.rate_c.kdot0 * (exp(y[M]) - 1.0);
-    kc = kcn + dt * kcd;
-  }
+    log_rate(d_.rate_c, y[M], kcn, kc, Rc, iec);
   else
-  {
-    kc = y[M];
-    kcd = rates ? T((kc - kcn) / dt) : T(0.0);
-  }
+    plain(d_.rate_c, y[M], kcn, kc, Rc);
   if (lt)
-  {
-    ktd = d_.rate_t.kdot0 * (exp(y[M + 1]) - 1.0);
-    kt = ktn + dt * ktd;
-  }
+    log_rate(d_.rate_t, y[M + 1], ktn, kt, Rt, iet);
   else
-  {
-    kt = y[M + 1];
-    ktd = rates ? T((kt - ktn) / dt) : T(0.0);
-  }
+    plain(d_.rate_t, y[M + 1], ktn, kt, Rt);
   // Strengths and the HTC coefficients (as in surfaces()).
-  const T Rc =
-      rates ? d_.rate_c(vmax(kcd, T(-0.999 * d_.rate_c.kdot0))) : T(1.0);
-  const T Rt =
-      rates ? d_.rate_t(vmax(ktd, T(-0.999 * d_.rate_t.kdot0))) : T(1.0);
   const T fc = d_.fc0 * hc(kc) * Rc;
   const T ft = d_.ft0 * exp(-kt / d_.kappa_tu) * Rt;
   const T ftH =
@@ -548,14 +550,14 @@ void HtcConcrete::reduced(const T* y, const int* ids, const T* str, double kcn,
   if (lc)
   {
     const T arg = 1.0 + dkc / (dt * d_.rate_c.kdot0);
-    r[M] = T(d_.rate_c.delta * (1.0 - arg * exp(-y[M])));
+    r[M] = T(d_.rate_c.delta * (1.0 - arg * iec));
   }
   else
     r[M] = (kc - kcn - dkc) * sK;
   if (lt)
   {
     const T arg = 1.0 + dkt / (dt * d_.rate_t.kdot0);
-    r[M + 1] = T(d_.rate_t.delta * (1.0 - arg * exp(-y[M + 1])));
+    r[M + 1] = T(d_.rate_t.delta * (1.0 - arg * iet));
   }
   else
     r[M + 1] = (kt - ktn - dkt) * sK;
