@@ -831,7 +831,7 @@ bool HtcConcrete::solve_set(
       ids[m++] = k;
   (void)m;
   const D strd[3] = {D(str[0]), D(str[1]), D(str[2])};
-  std::array<D, N> yd, rd;
+  std::array<D, N> yd, rd, rdt;
   std::array<double, N * N> J;
   std::array<int, N> piv;
   std::array<double, N> dy, yt, rt;
@@ -852,13 +852,24 @@ bool HtcConcrete::solve_set(
         v += value(r[i]) * value(r[i]);
       return std::isfinite(v) ? v : std::numeric_limits<double>::infinity();
     };
+    // The first trial point of each line search is evaluated with its
+    // derivatives: it is usually accepted, and then it is the next iterate
+    // (fresh: rd holds the residual and the Jacobian at y).
+    auto eval_jacobian =
+        [&](const std::array<double, N>& x, std::array<D, N>& r)
+    {
+      for (int i = 0; i < N; ++i)
+        yd[i] = D::variable(x[i], i);
+      reduced<D, M>(yd.data(), ids, strd, kcn, ktn, dt, lc, lt, rates, r.data(),
+                    sigd);
+    };
+    bool fresh = false;
     double hist[4] = {0, 0, 0, 0}; // merit of the last iterations
     for (int it = 0; it < p_.max_iterations; ++it)
     {
-      for (int i = 0; i < N; ++i)
-        yd[i] = D::variable(y[i], i);
-      reduced<D, M>(yd.data(), ids, strd, kcn, ktn, dt, lc, lt, rates,
-                    rd.data(), sigd);
+      if (!fresh)
+        eval_jacobian(y, rd);
+      fresh = false;
       double r0 = 0;
       for (int i = 0; i < N; ++i)
         r0 = std::max(r0, std::abs(rd[i].v));
@@ -910,13 +921,23 @@ bool HtcConcrete::solve_set(
       {
         for (int i = 0; i < N; ++i)
           yt[i] = y[i] + alpha * dy[i];
-        double st[3] = {str[0], str[1], str[2]};
-        reduced<double, M>(yt.data(), ids, st, kcn, ktn, dt, lc, lt, rates,
-                           rt.data(), sig);
+        if (ls == 0)
+        {
+          eval_jacobian(yt, rdt);
+          for (int i = 0; i < N; ++i)
+            rt[i] = rdt[i].v;
+        }
+        else
+        {
+          double st[3] = {str[0], str[1], str[2]};
+          reduced<double, M>(yt.data(), ids, st, kcn, ktn, dt, lc, lt, rates,
+                             rt.data(), sig);
+        }
         const double mt = merit(rt);
         if (mt <= (1.0 - 1e-4 * alpha) * m0)
         {
           ok = true;
+          fresh = ls == 0;
           break;
         }
         if (std::isfinite(mt))
@@ -932,6 +953,7 @@ bool HtcConcrete::solve_set(
           if (wnorm(db) <= (1.0 - 0.25 * alpha) * wnorm(dy))
           {
             ok = true;
+            fresh = ls == 0;
             break;
           }
         }
@@ -943,6 +965,8 @@ bool HtcConcrete::solve_set(
       if (!ok)
         return false;
       y = yt;
+      if (fresh)
+        std::swap(rd, rdt);
     }
     return false;
   };
