@@ -1056,22 +1056,25 @@ bool HtcConcrete::solve_set(
   if (!ok)
     return false;
 
-  // Polishing step and consistent tangent: derivatives of the residual and
-  // of the stresses with respect to y and to the trial principal stresses.
-  using DT = Dual<N + 3>;
-  std::array<DT, N> yT, rT;
-  DT sT[3], sigT[3];
+  // Polishing step and consistent tangent. rd and sigd hold the residual,
+  // the stresses and their derivatives with respect to y at the converged
+  // y (the last evaluation of newton); one more evaluation, at fixed y with
+  // the trial principal stresses as the variables, gives the derivatives
+  // with respect to those (3 directions instead of N + 3).
+  using DS = Dual<3>;
+  std::array<DS, N> yS, rS;
+  DS sS[3], sigS[3];
   for (int i = 0; i < N; ++i)
-    yT[i] = DT::variable(y[i], i);
+    yS[i] = DS(y[i]);
   for (int i = 0; i < 3; ++i)
-    sT[i] = DT::variable(str[i], N + i);
-  reduced<DT, M>(yT.data(), ids, sT, kcn, ktn, dt, lc, lt, rates, rT.data(),
-                 sigT);
+    sS[i] = DS::variable(str[i], i);
+  reduced<DS, M>(yS.data(), ids, sS, kcn, ktn, dt, lc, lt, rates, rS.data(),
+                 sigS);
   for (int i = 0; i < N; ++i)
   {
-    dy[i] = -rT[i].v;
+    dy[i] = -rd[i].v;
     for (int j = 0; j < N; ++j)
-      J[i * N + j] = rT[i].d[j];
+      J[i * N + j] = rd[i].d[j];
   }
   if (!lu_factor<N>(J, piv))
     return false;
@@ -1082,13 +1085,13 @@ bool HtcConcrete::solve_set(
   {
     std::array<double, N> e;
     for (int i = 0; i < N; ++i)
-      e[i] = rT[i].d[N + c];
+      e[i] = rS[i].d[c];
     lu_solve<N>(J, piv, e); // dy/dstr_c = -e
     for (int i = 0; i < 3; ++i)
     {
-      double s = sigT[i].d[N + c];
+      double s = sigS[i].d[c];
       for (int j = 0; j < N; ++j)
-        s -= sigT[i].d[j] * e[j];
+        s -= sigd[i].d[j] * e[j];
       dsig_dtr[i * 3 + c] = s;
     }
   }
