@@ -8,6 +8,7 @@
 #include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <type_traits>
 
 namespace damseis::material
 {
@@ -316,10 +317,19 @@ void HtcConcrete::surfaces(const std::array<T, 3>& s, const T& kc, const T& kt,
   // Rates may be transiently negative inside the Newton iteration; the
   // power law stays smooth for kdot > -kdot0 (always true with the log-rate
   // unknowns), the linear law for any rate.
-  const T Rc =
-      rate_on_ ? d_.rate_c(vmax(kcd, T(-0.999 * d_.rate_c.kdot0))) : T(1.0);
-  const T Rt =
-      rate_on_ ? d_.rate_t(vmax(ktd, T(-0.999 * d_.rate_t.kdot0))) : T(1.0);
+  // R(0) = 1 exactly: no pow for the zero rates of the elastic-trial test
+  // and the active-set prediction (plain values only; a Dual zero rate has
+  // derivatives).
+  auto rate = [&](const RateFunction& f, const T& kd) -> T
+  {
+    if (!rate_on_)
+      return T(1.0);
+    if constexpr (std::is_same_v<T, double>)
+      if (kd == 0.0)
+        return 1.0;
+    return f(vmax(kd, T(-0.999 * f.kdot0)));
+  };
+  const T Rc = rate(d_.rate_c, kcd), Rt = rate(d_.rate_t, ktd);
   const T fc = d_.fc0 * hc(kc) * Rc;
   const T ft = d_.ft0 * exp(-kt / d_.kappa_tu) * Rt;
   const T ftH =
