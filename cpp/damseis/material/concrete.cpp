@@ -1017,6 +1017,14 @@ bool HtcConcrete::solve_set(
       from(y0, kcd_old, ktd_old);
       ok = newton(lc, lt, true, y);
     }
+    // Edge sets: when the start (a) stalls with a negative multiplier, the
+    // viscoplastic return has left the edge (the rate-independent one needed
+    // it) and the reduced iteration crawls towards lam_HTC + lam_edge = 0,
+    // where the signed flow norm jumps; (b) and (c) crawl there too (8% of
+    // the viscoplastic points of bench_return_map, ~25 iterations each). They
+    // are skipped: the full system (solve_full) finds the negative
+    // multiplier and the drop/add loop removes the edge.
+    bool crossed = false;
     if (!ok)
     {
       std::array<double, N> yp = y0;
@@ -1024,14 +1032,17 @@ bool HtcConcrete::solve_set(
       {
         from(yp, (yp[M] - kcn) / dt, (yp[M + 1] - ktn) / dt);
         ok = newton(lc, lt, true, y);
+        if (!ok && (set & htc_edge))
+          for (int j = 0; j < M; ++j)
+            crossed = crossed || y[j] < 0.0;
       }
     }
-    if (!ok && !old_first)
+    if (!ok && !old_first && !crossed)
     {
       from(y0, kcd_old, ktd_old);
       ok = newton(lc, lt, true, y);
     }
-    if (!ok && (kcd_old > 0.0 || ktd_old > 0.0)) // else the same as (b)
+    if (!ok && !crossed && (kcd_old > 0.0 || ktd_old > 0.0))
     {
       from(y0, 0.0, 0.0);
       ok = newton(lc, lt, true, y);
