@@ -900,9 +900,12 @@ bool HtcConcrete::solve_set(
       d_.E; // bound on any multiplier (strain units)
 
   // Damped Newton on the reduced system; on success y is converged.
-  auto newton = [&](bool lc, bool lt, bool rates,
-                    std::array<double, N>& y) -> bool
+  // (tol: scaled residual tolerance, p_.tolerance unless given.)
+  auto newton = [&](bool lc, bool lt, bool rates, std::array<double, N>& y,
+                    double tol = -1.0) -> bool
   {
+    if (tol < 0.0)
+      tol = p_.tolerance;
     auto merit = [&](const auto& r)
     {
       double v = 0;
@@ -933,7 +936,7 @@ bool HtcConcrete::solve_set(
         r0 = std::max(r0, std::abs(rd[i].v));
       if (!std::isfinite(r0))
         return false;
-      if (r0 < p_.tolerance)
+      if (r0 < tol)
         return true;
       const double m0 = merit(rd);
       // A set without a solution makes the iteration stall: give up when
@@ -1076,7 +1079,9 @@ bool HtcConcrete::solve_set(
     if (!ok)
     {
       std::array<double, N> yp = y0;
-      if (newton(false, false, false, yp))
+      // Only a start: converged to 1e-6 (its last quadratic step,
+      // 1e-6 -> 1e-12, does not change the viscoplastic root).
+      if (newton(false, false, false, yp, std::max(p_.tolerance, 1e-6)))
       {
         from(yp, (yp[M] - kcn) / dt, (yp[M + 1] - ktn) / dt);
         ok = newton(lc, lt, true, y);
