@@ -1169,14 +1169,16 @@ bool HtcConcrete::solve_set(
       dsig_dtr[i * 3 + c] = s;
     }
   }
-  {
-    double st[3] = {str[0], str[1], str[2]};
-    reduced<double, M>(y.data(), ids, st, kcn, ktn, dt, lc, lt, rates,
-                       rt.data(), sig);
-  }
+  // Stresses at the polished y to first order (the step is ~tolerance: the
+  // second-order term is far below round-off).
   xout = {};
   for (int i = 0; i < 3; ++i)
-    xout[i] = sig[i];
+  {
+    double s = sigd[i].v;
+    for (int j = 0; j < N; ++j)
+      s += sigd[i].d[j] * dy[j];
+    xout[i] = s;
+  }
   xout[3] = lc ? kcn + dt * d_.rate_c.kdot0 * std::expm1(y[M]) : y[M];
   xout[4] = lt ? ktn + dt * d_.rate_t.kdot0 * std::expm1(y[M + 1]) : y[M + 1];
   for (int j = 0; j < M; ++j)
