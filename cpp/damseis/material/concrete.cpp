@@ -1065,7 +1065,18 @@ bool HtcConcrete::solve_set(
     const bool old_first = !(set & (htc_surface | htc_edge | htc_apex));
     if (old_first)
     {
+      // Multipliers from the closed-form return to the Rankine planes
+      // frozen at the old strength and rate: (lambda 1 1^T + 2G I) mu =
+      // sigma_k^tr - ft (one iteration fewer of the 4-5 from zero).
       from(y0, kcd_old, ktd_old);
+      const double ft = tensile_strength(ktn, ktd_old);
+      double sum = 0.0;
+      for (int j = 0; j < M; ++j)
+        sum += str[ids[j] - 2] - ft;
+      sum /= 2.0 * d_.G + M * d_.lambda;
+      for (int j = 0; j < M; ++j)
+        y[j] = std::max((str[ids[j] - 2] - ft - d_.lambda * sum) / (2.0 * d_.G),
+                        0.0);
       ok = newton(lc, lt, true, y);
     }
     // Edge sets: when the start (a) stalls with a negative multiplier, the
