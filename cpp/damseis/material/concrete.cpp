@@ -873,6 +873,33 @@ bool HtcConcrete::solve_full(unsigned set, const std::array<double, 3>& str,
   return true;
 }
 
+double HtcConcrete::rankine_1_multiplier(double s1, double ktn, double dt,
+                                         bool rates) const
+{
+  // sigma_1 = s1 - (lambda + 2G) mu = ft0 exp(-(ktn + sqrt(2/3) mu) / kt_u)
+  // R(sqrt(2/3) mu / dt): one root, as the softening modulus is below E.
+  const double a = d_.lambda + 2.0 * d_.G, c = c23 / d_.kappa_tu;
+  const double q = rates ? c23 / (dt * d_.rate_t.kdot0) : 0.0;
+  const double dl = d_.rate_t.delta, e0 = d_.ft0 * std::exp(-ktn / d_.kappa_tu);
+  double lo = 0.0, hi = std::max(s1, 0.0) / a;
+  double mu = std::clamp((s1 - e0) / a, lo, hi);
+  for (int it = 0; it < 60; ++it)
+  {
+    const double R = rates ? std::pow(1.0 + q * mu, dl) : 1.0;
+    const double ft = e0 * std::exp(-c * mu) * R;
+    const double g = s1 - a * mu - ft;
+    if (std::abs(g) <= 1e-14 * d_.fc0)
+      break;
+    (g > 0.0 ? lo : hi) = mu;
+    const double dg = -a + ft * (c - (rates ? dl * q / (1.0 + q * mu) : 0.0));
+    double next = mu - g / dg;
+    if (!(next > lo && next < hi))
+      next = 0.5 * (lo + hi);
+    mu = next;
+  }
+  return mu;
+}
+
 template <int M>
 bool HtcConcrete::solve_set(unsigned set, const std::array<double, 3>& str,
                             double kcn, double ktn, double kcd_old,
@@ -1052,9 +1079,30 @@ bool HtcConcrete::solve_set(unsigned set, const std::array<double, 3>& str,
     if (lt)
       y[M + 1] = std::log1p(std::max(rt2, 0.0) / d_.rate_t.kdot0);
   };
+  // The Rankine plane sigma_1 <= ft alone (tensile points): the start is
+  // the solution of the scalar equation of its return (the reduced
+  // iteration only confirms it and gives the Jacobian), unless the rate
+  // law is linear.
+  const bool r1 = set == rankine_1 && (!rates || log_t_);
   bool ok = false;
   if (!rates)
-    ok = newton(false, false, false, y);
+  {
+    if (r1)
+    {
+      const double mu = rankine_1_multiplier(str[0], ktn, dt, false);
+      y[0] = mu;
+      y[M + 1] = ktn + c23 * mu;
+      ok = newton(false, false, false, y);
+      if (!ok)
+      {
+        y = {};
+        y[M] = kcn;
+        y[M + 1] = ktn;
+      }
+    }
+    if (!ok)
+      ok = newton(false, false, false, y);
+  }
   else
   {
     // Starts, from zero multipliers: (a) the rate-independent return of the
@@ -1073,15 +1121,28 @@ bool HtcConcrete::solve_set(unsigned set, const std::array<double, 3>& str,
       // frozen at the old strength and rate: (lambda 1 1^T + 2G I) mu =
       // sigma_k^tr - ft (one iteration fewer of the 4-5 from zero).
       from(y0, kcd_old, ktd_old);
-      const double ft = tensile_strength(ktn, ktd_old);
-      double sum = 0.0;
-      for (int j = 0; j < M; ++j)
-        sum += str[ids[j] - 2] - ft;
-      sum /= 2.0 * d_.G + M * d_.lambda;
-      for (int j = 0; j < M; ++j)
-        y[j] = std::max((str[ids[j] - 2] - ft - d_.lambda * sum) / (2.0 * d_.G),
-                        0.0);
-      ok = newton(lc, lt, true, y);
+      if (r1)
+      {
+        const double mu = rankine_1_multiplier(str[0], ktn, dt, true);
+        y[0] = mu;
+        y[M] = 0.0; // no kappa_c flow
+        y[M + 1] = std::log1p(c23 * mu / (dt * d_.rate_t.kdot0));
+        ok = newton(lc, lt, true, y);
+        if (!ok)
+          from(y0, kcd_old, ktd_old);
+      }
+      if (!ok)
+      {
+        const double ft = tensile_strength(ktn, ktd_old);
+        double sum = 0.0;
+        for (int j = 0; j < M; ++j)
+          sum += str[ids[j] - 2] - ft;
+        sum /= 2.0 * d_.G + M * d_.lambda;
+        for (int j = 0; j < M; ++j)
+          y[j] = std::max(
+              (str[ids[j] - 2] - ft - d_.lambda * sum) / (2.0 * d_.G), 0.0);
+        ok = newton(lc, lt, true, y);
+      }
     }
     // Edge sets: when the start (a) stalls with a negative multiplier, the
     // viscoplastic return has left the edge (the rate-independent one needed

@@ -188,6 +188,11 @@ private:
                  const std::array<double, 9>& warm, std::array<double, 9>& x,
                  std::array<double, 9>& dsig_dtr, int& iterations,
                  bool probe_edge, bool& edge_left) const;
+  /// The multiplier of the return to the Rankine plane sigma_1 <= ft alone,
+  /// by a safeguarded scalar Newton iteration (rates: power-law R of the
+  /// kappa_t rate): the start of the reduced iteration of that set.
+  double rankine_1_multiplier(double s1, double ktn, double dt,
+                              bool rates) const;
   /// The full system (principal stresses, kappas, multipliers; exact
   /// Jacobian by AD): the second-line solver of a set.
   template <int M>
