@@ -1125,7 +1125,7 @@ bool HtcConcrete::solve_set(unsigned set, const std::array<double, 3>& str,
       {
         const double mu = rankine_1_multiplier(str[0], ktn, dt, true);
         y[0] = mu;
-        y[M] = 0.0; // no kappa_c flow
+        y[M] = lc ? 0.0 : kcn; // no kappa_c flow
         y[M + 1] = std::log1p(c23 * mu / (dt * d_.rate_t.kdot0));
         ok = newton(lc, lt, true, y);
         if (!ok)
