@@ -178,13 +178,21 @@ private:
   /// kappa_c, kappa_t, multipliers), dsig_dtr = d(sigma)/d(trial sigma) in
   /// principal space (row-major 3x3). patient: no early exit on stalling.
   /// warm (if warm_set != 0): the solution x of another set, the last
-  /// starting point tried.
+  /// starting point tried. probe_edge (viscoplastic {HTC, edge}): give up
+  /// (false, edge_left = true) when the rate-independent return puts less
+  /// than 30% of the HTC flow on the edge branch.
   template <int M>
   bool solve_set(unsigned set, const std::array<double, 3>& str, double kcn,
                  double ktn, double kcd_old, double ktd_old, double dt,
                  bool patient, unsigned warm_set,
                  const std::array<double, 9>& warm, std::array<double, 9>& x,
-                 std::array<double, 9>& dsig_dtr, int& iterations) const;
+                 std::array<double, 9>& dsig_dtr, int& iterations,
+                 bool probe_edge, bool& edge_left) const;
+  /// The multiplier of the return to the Rankine plane sigma_1 <= ft alone,
+  /// by a safeguarded scalar Newton iteration (rates: power-law R of the
+  /// kappa_t rate): the start of the reduced iteration of that set.
+  double rankine_1_multiplier(double s1, double ktn, double dt,
+                              bool rates) const;
   /// The full system (principal stresses, kappas, multipliers; exact
   /// Jacobian by AD): the second-line solver of a set.
   template <int M>
