@@ -205,7 +205,11 @@ std::string active_set_name(unsigned a)
   const char* names[6] = {"HTC", "edge", "R1", "R2", "R3", "apex"};
   for (int i = 0; i < 6; ++i)
     if (a & (1u << i))
-      s += (s.empty() ? "" : "+") + std::string(names[i]);
+    {
+      if (!s.empty())
+        s += '+';
+      s += names[i];
+    }
   return s;
 }
 
