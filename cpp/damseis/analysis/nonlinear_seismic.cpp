@@ -163,6 +163,28 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   Vector fint0 = column_vector(K.mat());
   system.internal_force(fint0.vec());
   const double static_seconds = seconds_since(wall_start);
+  // Softening regularised by the crack band: say where it is not exact
+  // (material/README.md, README "softening studies").
+  if (plastic && fe.degree() > 1)
+  {
+    results::print(comm,
+                   "note: P" + std::to_string(fe.degree()) +
+                       " elements: the crack band (energy Gf per unit crack "
+                       "area) is exact for P1 only (a P2 cell can localise in "
+                       "part of its points: 0.75 Gf in the crack-band test); "
+                       "use mesh.order = 1 for softening studies");
+  }
+  if (plastic && cm.cells_with_reduced_strength() > 0)
+  {
+    results::print(
+        comm,
+        "note: " + std::to_string(cm.cells_with_reduced_strength()) +
+            " cells are larger than E Gf / (1.25 ft^2) (snap-back "
+            "limit of the softening): their tensile strength is lowered to "
+            "avoid snap-back (summary.json concrete."
+            "cells_with_reduced_tensile_strength); refine the "
+            "mesh where the concrete cracks");
+  }
   results::print(comm,
                  "static stage: " +
                      std::to_string(static_g.iterations + static_r.iterations) +
@@ -462,8 +484,8 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
       {"dynamic_factor_strength", concrete.factor_strength},
       {"material_bins", cm.material_count()},
       {"material_integration", concrete.implex ? "implex" : "implicit"},
-      {"cells_with_reduced_tensile_strength",
-       cm.cells_with_reduced_strength()}};
+      {"cells_with_reduced_tensile_strength", cm.cells_with_reduced_strength()},
+      {"crack_band_exact", fe.degree() == 1}};
   summary["max_kappa_t"] = {
       {"value", kt_max.value}, {"x", kt_max.x[0]}, {"y", kt_max.x[1]}};
   summary["max_strain_rate_per_s"] = {{"value", rate_max.value},
