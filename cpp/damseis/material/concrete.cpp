@@ -26,8 +26,8 @@ std::array<double, 3> principal_fast(const Vector6& s)
     // Plane states (no yz, zx shear): the in-plane pair in closed form and
     // sigma_zz, sorted; no trigonometry (this test runs at every point of
     // a 2D model in every Newton iteration).
-    const double c = 0.5 * (s[0] + s[1]);
-    const double r = std::hypot(0.5 * (s[0] - s[1]), s[3]);
+    const double c = 0.5 * (s[0] + s[1]), h = 0.5 * (s[0] - s[1]);
+    const double r = std::sqrt(h * h + s[3] * s[3]); // stresses: no overflow
     std::array<double, 3> p = {c + r, c - r, s[2]};
     if (p[2] > p[1])
       std::swap(p[1], p[2]);
@@ -350,6 +350,15 @@ HtcConcrete::HtcConcrete(const ConcreteParameters& p) : p_(p)
   rate_on_ = p.mode == Mode::viscoplastic && p.rate_law != RateLaw::none;
   log_c_ = rate_on_ && d_.rate_c.law == RateLaw::ceb_fip;
   log_t_ = rate_on_ && d_.rate_t.law == RateLaw::ceb_fip;
+  // admissible()'s virgin point: what surfaces() computes at kappa = 0 and
+  // zero rates (R = 1), by the same expressions.
+  const double fc_v = d_.fc0 * hc(0.0) * 1.0;
+  virgin_ft_ = d_.ft0 * std::exp(-0.0 / d_.kappa_tu) * 1.0;
+  const double ftH_v =
+      vmin(vmax((1.0 + p_.htc_tension_offset) * virgin_ft_, p_.rho_min * fc_v),
+           p_.rho_max * fc_v);
+  virgin_ifc_ = 1.0 / fc_v;
+  virgin_htc_ = family_.coefficients(ftH_v * virgin_ifc_);
 }
 
 template <class T>
@@ -388,7 +397,16 @@ void HtcConcrete::surfaces(const std::array<T, 3>& s, const T& kc, const T& kt,
       vmin(vmax(T((1.0 + p_.htc_tension_offset) * ft), T(p_.rho_min * fc)),
            T(p_.rho_max * fc));
   const T ifc = 1.0 / fc;
-  const auto X = family_.coefficients(T(ftH * ifc));
+  surfaces_at(s, ft, ifc, family_.coefficients(T(ftH * ifc)), phi, n);
+}
+
+template <class T>
+void HtcConcrete::surfaces_at(const std::array<T, 3>& s, const T& ft,
+                              const T& ifc, const std::array<T, 4>& X,
+                              std::array<T, 5>& phi,
+                              std::array<std::array<T, 3>, 5>* n) const
+{
+  using std::sqrt;
   const T I1 = s[0] + s[1] + s[2];
   const T m = I1 / 3.0;
   const std::array<T, 3> dev = {s[0] - m, s[1] - m, s[2] - m};
@@ -1688,8 +1706,18 @@ bool HtcConcrete::admissible(const Vector6& stress, double kappa_c,
     return true;
   const double tol_f = p_.tolerance * d_.fc0;
   std::array<double, 5> phi;
-  surfaces<double>(principal_fast(stress), kappa_c, kappa_t, 0.0, 0.0, phi,
-                   nullptr);
+  if (kappa_c == 0.0 && kappa_t == 0.0)
+  {
+    // Virgin point (most points of a dam): the strengths and HTC
+    // coefficients surfaces() would compute there, made once.
+    surfaces_at<double>(principal_fast(stress), virgin_ft_, virgin_ifc_,
+                        virgin_htc_, phi, nullptr);
+  }
+  else
+  {
+    surfaces<double>(principal_fast(stress), kappa_c, kappa_t, 0.0, 0.0, phi,
+                     nullptr);
+  }
   return phi[0] <= tol_f && phi[2] <= tol_f;
 }
 

@@ -214,6 +214,12 @@ private:
                double dt, bool lc, bool lt, bool rates, T* r, T* sig) const;
   template <class T>
   T hc(const T& kc) const;
+  /// The second half of surfaces(): the yield functions for given current
+  /// tensile strength ft, 1 / fc and HTC coefficients X.
+  template <class T>
+  void surfaces_at(const std::array<T, 3>& s, const T& ft, const T& ifc,
+                   const std::array<T, 4>& X, std::array<T, 5>& phi,
+                   std::array<std::array<T, 3>, 5>* n) const;
   /// First active set to try, from the trial state (frozen surfaces).
   unsigned predict_set(const std::array<double, 3>& str, double kc, double kt,
                        const std::array<double, 5>& phi,
@@ -224,6 +230,10 @@ private:
   HtcFamily family_;
   bool rate_on_ = false;
   bool log_c_ = false, log_t_ = false; ///< log-rate unknowns (power law)
+  /// ft, 1 / fc and the HTC coefficients at kappa_c = kappa_t = 0 and zero
+  /// rates, as surfaces() computes them (admissible()'s common case).
+  double virgin_ft_ = 0.0, virgin_ifc_ = 0.0;
+  std::array<double, 4> virgin_htc_{};
 };
 
 } // namespace damseis::material
