@@ -120,3 +120,56 @@ TEST(HtcConcreteSurface, InitialSurfaceThroughCalibrationPoints)
   EXPECT_NEAR(htc_strength_along(k, fc, {1, 0, 0}),
               (1 + p.htc_tension_offset) * ft, 1e-6 * ft);
 }
+
+// The elastic-trial test of integrate() (admissible(): closed-form principal
+// values, strengths cached for virgin points) against yield_value(), which
+// decomposes the stress independently and evaluates every surface from the
+// internal variables: the same decision for random plane and 3D stresses
+// around the surfaces, virgin and softened, except within 1e-8 fc0 of a
+// surface (round-off of the two routes; admissible() accepts f <= 1e-10 fc0).
+TEST(HtcConcreteSurface, ElasticTrialTestAgreesWithYieldValue)
+{
+  std::mt19937 g(2024);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (Mode mode : {Mode::plastic, Mode::viscoplastic})
+  {
+    ConcreteParameters p;
+    p.mode = mode;
+    const HtcConcrete m(p);
+    int checked = 0, in = 0, out = 0, band = 0;
+    for (auto [kc, kt] : {std::pair{0.0, 0.0}, std::pair{2e-4, 0.0},
+                          std::pair{0.0, 5e-5}, std::pair{1e-3, 3e-4}})
+    {
+      for (int i = 0; i < 20000; ++i)
+      {
+        // Half plane states (the 2D models' points), half general ones;
+        // magnitudes from the tensile to past the compressive strength.
+        const double s = (i % 4 < 2 ? 0.3 : 1.3) * p.fc0;
+        Vector6 st = {s * u(g), s * u(g), s * u(g), 0.5 * s * u(g), 0, 0};
+        if (i % 2)
+        {
+          st[4] = 0.5 * s * u(g);
+          st[5] = 0.5 * s * u(g);
+        }
+        else
+          st[2] = 0.0;
+        const double f = m.yield_value(st, kc, kt, 0.0, 0.0);
+        if (std::abs(f) < 1e-8)
+        {
+          ++band;
+          continue;
+        }
+        ++checked;
+        const bool a = m.admissible(st, kc, kt);
+        EXPECT_EQ(a, f < 0.0) << "kc " << kc << " kt " << kt << " f " << f;
+        (a ? in : out) += 1;
+      }
+    }
+    std::printf("[   metric ] %s: %d states checked (%d admissible, %d not), "
+                "%d within 1e-8 fc0 of a surface\n",
+                mode == Mode::plastic ? "plastic" : "viscoplastic", checked, in,
+                out, band);
+    EXPECT_GT(in, 10000);
+    EXPECT_GT(out, 10000);
+  }
+}
