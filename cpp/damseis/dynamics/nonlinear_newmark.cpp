@@ -195,8 +195,7 @@ StepReport solve_static(NonlinearSystem& system, Mat K0, Vec F_from, Vec F_to,
   TangentSolver tangent_solver(comm, settings.krylov_rtol,
                                settings.krylov_max_iterations);
   initial.factorize(K0);
-  Mat J;
-  J = fem::duplicate_matrix(K0, MAT_DO_NOT_COPY_VALUES);
+  Mat J = fem::duplicate_matrix(K0, MAT_DO_NOT_COPY_VALUES);
   Vec F, R, du, ut, fint;
   for (Vec* x : {&F, &R, &du, &ut, &fint})
     VecDuplicate(u, x);
@@ -319,8 +318,7 @@ const fem::DirectSolver& NonlinearNewmark::initial_solver(int level,
   const double w = 1.0 + _scheme.alpha;
   const double a0 = 1.0 / (beta * dt * dt), a1 = gamma / (beta * dt);
   // J0 = a0 M + (1 + alpha)(a1 C + K0).
-  Mat J0;
-  J0 = fem::duplicate_matrix(_K0, MAT_COPY_VALUES);
+  Mat J0 = fem::duplicate_matrix(_K0, MAT_COPY_VALUES);
   MatScale(J0, w * (1.0 + a1 * _damping.b_stiffness));
   MatAXPY(J0, a0 + w * a1 * _damping.a_mass, _M, SUBSET_NONZERO_PATTERN);
   MPI_Comm comm;

@@ -44,8 +44,8 @@ TangentSolver::TangentSolver(MPI_Comm comm, double rtol, int max_iterations)
   // Flexible GMRES: with a fixed preconditioner the same iterates as
   // right-preconditioned GMRES, but it keeps the preconditioned basis, so
   // the solution needs no extra preconditioner application at the end
-  // (GMRES applies it once more per solve: about 1 triangular solve pair in
-  // 5 on Koyna). No restart within the allowed iterations; the tolerance
+  // (GMRES applies it once more per solve: 1 triangular solve pair in 6.7
+  // on Koyna). No restart within the allowed iterations; the tolerance
   // applies to the true residual of J du = R.
   KSPSetType(_krylov, KSPFGMRES);
   KSPGMRESSetRestart(_krylov, _max_iterations);

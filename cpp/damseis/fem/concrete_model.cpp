@@ -603,6 +603,9 @@ void ConcreteModel::add_tangent_change(Mat A, double scale) const
   if (ids.size() != 1 || _a->coefficient_offsets().back() != cstride)
     throw std::logic_error("tangent form: one cell integral of Ct expected");
   const auto& element = *V.element();
+  // (No cell permutation data is passed: Lagrange elements need none.)
+  if (element.needs_dof_transformations())
+    throw std::logic_error("tangent change: element needs dof transformations");
   dfem::impl::assemble_cells(
       dolfinx::la::petsc::Matrix::set_block_fn(A, ADD_VALUES),
       _fe.mesh()->geometry(), std::span<const std::int32_t>(_tangent_cells),
