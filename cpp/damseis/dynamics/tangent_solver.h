@@ -1,5 +1,5 @@
 // Newton directions J du = R for the nonlinear integrators, reusing
-// factorisations (algorithms.md 6.2): GMRES on the consistent matrix J,
+// factorisations (algorithms.md 6.2): GMRES (flexible) on the consistent J,
 // preconditioned by a matrix factorised earlier (the initial effective
 // matrix J0, or a tangent of the same step length factorised earlier in the
 // step; forget() at a step's start).
