@@ -25,11 +25,9 @@ public:
     return last.failed == 0;
   }
   void internal_force(Vec f) override { _m.assemble_internal_force(f); }
-  void tangent(Mat A) override { _m.assemble_tangent(A); }
-  bool add_tangent_change(Mat A, double scale) override
+  void add_tangent_change(Mat A, double scale) override
   {
     _m.add_tangent_change(A, scale);
-    return true;
   }
   bool tangent_is_initial() const override
   {

@@ -6,8 +6,9 @@
 //
 // Matrix strategy: the initial (elastic) effective matrix J0 is factorised
 // once. While every material point of the trial is elastic, J0 is the exact
-// Jacobian and gives the direction. Otherwise the consistent tangent J is
-// assembled and J du = R solved by GMRES preconditioned with factors already
+// Jacobian and gives the direction. Otherwise the consistent matrix
+// J = J0 + w (K_T - K0) is built (the change only where the tangent is not
+// elastic) and J du = R solved by GMRES preconditioned with factors already
 // made (J0, or a tangent factorised earlier in the step); J is factorised
 // only when GMRES would need too many iterations (TangentSolver). A step
 // that does not converge is cut in halves (recursively); a step that cannot
@@ -62,14 +63,11 @@ public:
   /// Internal force of the last trial (layout of K0's columns, zero at
   /// fixed dofs).
   virtual void internal_force(Vec f) = 0;
-  /// Tangent of the last trial into A (the pattern of K0; fixed rows and
-  /// columns identity).
-  virtual void tangent(Mat A) = 0;
   /// Adds scale (K_T - K0) of the last trial to A (assembled, the pattern
-  /// of K0) and finishes the assembly; false, with A untouched, if the
-  /// system cannot (then tangent() is used). Cheaper than tangent() where
-  /// K_T differs from K0 in a few cells.
-  virtual bool add_tangent_change(Mat, double) { return false; }
+  /// of K0; nothing at fixed rows and columns) and finishes the assembly:
+  /// every Jacobian is a matrix of K0's pattern plus this change, which is
+  /// nonzero only where the tangent is not elastic.
+  virtual void add_tangent_change(Mat A, double scale) = 0;
   /// The last trial becomes the committed state. False if that fails (an
   /// IMPL-EX state update at a point): the committed state is unchanged
   /// and the step is cut.
@@ -152,11 +150,10 @@ private:
   NonlinearSystem& _system;
   NewtonSettings _settings;
   fem::Factorization _factorization;
-  /// Per step length dt / 2^level: J0, its factors, and J0 - w K0 (the
-  /// inertia and damping part of every effective matrix, pattern of K0).
+  /// Per step length dt / 2^level: J0 and its factors.
   struct Level
   {
-    Mat J0 = nullptr, rest = nullptr;
+    Mat J0 = nullptr;
     std::unique_ptr<fem::DirectSolver> solver;
   };
   std::map<int, Level> _initial;
