@@ -1,8 +1,12 @@
 /// HTC surface: calibration, classic preset, paper form (eq. 4).
 #include "damseis/material/concrete.h"
 
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
 #include <gtest/gtest.h>
 #include <random>
+#include <vector>
 
 using namespace damseis::material;
 
@@ -172,4 +176,124 @@ TEST(HtcConcreteSurface, ElasticTrialTestAgreesWithYieldValue)
     EXPECT_GT(in, 10000);
     EXPECT_GT(out, 10000);
   }
+}
+
+// Reference: admissible() itself, at stresses on the ball of radius
+// admissible_radius() around random states (plane and 3D, untouched and
+// softened): along random directions, along the steepest ascent of the
+// yield value (finite differences of the independent yield_value) and
+// along sigma_1's eigen-dyad, every such stress must pass (the radius is a
+// proof, not an estimate: no tolerance). Tightness: the radius is at least
+// 1/4 of the distance to the surface along the steepest ascent (median),
+// else the pre-test saves little.
+TEST(HtcConcreteSurface, AdmissibleRadiusIsInsideTheSurfaces)
+{
+  std::mt19937 g(77);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  auto norm = [](const Vector6& d)
+  {
+    return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2] +
+                     2.0 * (d[3] * d[3] + d[4] * d[4] + d[5] * d[5]));
+  };
+  auto along = [](const Vector6& s, const Vector6& d, double t)
+  {
+    Vector6 x;
+    for (int i = 0; i < 6; ++i)
+      x[i] = s[i] + t * d[i];
+    return x;
+  };
+  for (Mode mode : {Mode::plastic, Mode::viscoplastic})
+  {
+    ConcreteParameters p;
+    p.mode = mode;
+    const HtcConcrete m(p);
+    int balls = 0, probes = 0;
+    std::vector<double> tightness;
+    for (auto [kc, kt] : {std::pair{0.0, 0.0}, std::pair{2e-4, 0.0},
+                          std::pair{0.0, 5e-5}, std::pair{1e-3, 3e-4}})
+    {
+      for (int i = 0; i < 4000; ++i)
+      {
+        const double s = (i % 4 < 2 ? 0.3 : 1.3) * p.fc0;
+        Vector6 st = {s * u(g), s * u(g), s * u(g), 0.5 * s * u(g), 0, 0};
+        if (i % 2)
+        {
+          st[4] = 0.5 * s * u(g);
+          st[5] = 0.5 * s * u(g);
+        }
+        else
+          st[2] = 0.0;
+        const double r = m.admissible_radius(st, kc, kt);
+        if (r == 0.0)
+        {
+          EXPECT_GT(m.yield_value(st, kc, kt, 0.0, 0.0), -1e-6);
+          continue;
+        }
+        ++balls;
+        ASSERT_TRUE(m.admissible(st, kc, kt));
+        std::vector<Vector6> dirs;
+        for (int k = 0; k < 6; ++k)
+          dirs.push_back({u(g), u(g), u(g), u(g), u(g), u(g)});
+        Vector6 grad;
+        for (int k = 0; k < 6; ++k)
+        {
+          const double h = 1e-6 * p.fc0;
+          Vector6 a = st, b = st;
+          a[k] += h;
+          b[k] -= h;
+          grad[k] = (m.yield_value(a, kc, kt, 0.0, 0.0) -
+                     m.yield_value(b, kc, kt, 0.0, 0.0)) /
+                    (2.0 * h) * (k < 3 ? 1.0 : 0.5);
+        }
+        dirs.push_back(grad);
+        {
+          Eigen::Matrix3d T;
+          T << st[0], st[3], st[5], st[3], st[1], st[4], st[5], st[4], st[2];
+          Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(T);
+          const Eigen::Vector3d v = es.eigenvectors().col(2);
+          dirs.push_back({v[0] * v[0], v[1] * v[1], v[2] * v[2], v[0] * v[1],
+                          v[1] * v[2], v[0] * v[2]});
+        }
+        for (auto& d : dirs)
+        {
+          const double n = norm(d);
+          if (n == 0.0)
+            continue;
+          for (double& x : d)
+            x /= n;
+          ++probes;
+          EXPECT_TRUE(m.admissible(along(st, d, r), kc, kt))
+              << "kc " << kc << " kt " << kt << " r " << r;
+        }
+        // Distance to the surface along the steepest ascent (bisection).
+        const Vector6& d = dirs[6];
+        if (norm(d) > 0.5)
+        {
+          double lo = r, hi = r;
+          while (m.admissible(along(st, d, hi), kc, kt) && hi < 1e3 * p.fc0)
+            hi *= 2.0;
+          for (int it = 0; it < 50; ++it)
+          {
+            const double mid = 0.5 * (lo + hi);
+            (m.admissible(along(st, d, mid), kc, kt) ? lo : hi) = mid;
+          }
+          tightness.push_back(r / lo);
+        }
+      }
+    }
+    std::sort(tightness.begin(), tightness.end());
+    const double median = tightness[tightness.size() / 2];
+    std::printf("[   metric ] %s: %d balls, %d probes on their spheres, "
+                "radius / distance along the steepest ascent: median %.2f, "
+                "10%% quantile %.2f\n",
+                mode == Mode::plastic ? "plastic" : "viscoplastic", balls,
+                probes, median, tightness[tightness.size() / 10]);
+    EXPECT_GT(balls, 2000);
+    EXPECT_GT(median, 0.25);
+  }
+  // Elastic mode: no surfaces.
+  ConcreteParameters p;
+  p.mode = Mode::elastic;
+  EXPECT_EQ(HtcConcrete(p).admissible_radius({1e9, 0, 0, 0, 0, 0}, 0, 0),
+            HUGE_VAL);
 }

@@ -1721,6 +1721,57 @@ bool HtcConcrete::admissible(const Vector6& stress, double kappa_c,
   return phi[0] <= tol_f && phi[2] <= tol_f;
 }
 
+double HtcConcrete::admissible_radius(const Vector6& stress, double kappa_c,
+                                      double kappa_t) const
+{
+  if (p_.mode == Mode::elastic)
+    return HUGE_VAL;
+  // Strengths and HTC coefficients at zero rates, as admissible() has them
+  // (the same expressions as surfaces()).
+  double ft = virgin_ft_, ifc = virgin_ifc_;
+  std::array<double, 4> X = virgin_htc_;
+  if (!(kappa_c == 0.0 && kappa_t == 0.0))
+  {
+    const double fc = d_.fc0 * hc(kappa_c);
+    ft = d_.ft0 * std::exp(-kappa_t / d_.kappa_tu);
+    const double ftH =
+        vmin(vmax((1.0 + p_.htc_tension_offset) * ft, p_.rho_min * fc),
+             p_.rho_max * fc);
+    ifc = 1.0 / fc;
+    X = family_.coefficients(ftH * ifc);
+  }
+  const std::array<double, 3> s = principal_fast(stress);
+  std::array<double, 5> phi;
+  surfaces_at<double>(s, ft, ifc, X, phi, nullptr);
+  const double f0 = d_.fc0, tol_f = p_.tolerance * f0;
+  const double I1 = s[0] + s[1] + s[2], m = I1 / 3.0;
+  const double J2 = 0.5 * ((s[0] - m) * (s[0] - m) + (s[1] - m) * (s[1] - m) +
+                           (s[2] - m) * (s[2] - m));
+  const double q = std::sqrt(J2 + 1e-30 * f0 * f0);
+  // Room to the surfaces admissible() tests (phi_HTC of sigma_1, and
+  // sigma_1 - ft), less a guard of 1e-9 of the size of their terms for the
+  // round-off of both evaluations.
+  const double size = std::abs(X[0]) * J2 * ifc * ifc +
+                      std::abs(X[1]) * q * ifc + std::abs(X[2] * s[0] * ifc) +
+                      std::abs(X[3] * I1 * ifc) + 1.0;
+  const double gH = tol_f - phi[0] - 1e-9 * f0 * size;
+  const double gR = tol_f - phi[2] - 1e-9 * (std::abs(s[0]) + ft + f0);
+  if (!(gH > 0.0 && gR > 0.0))
+    return 0.0;
+  // For |Delta|_F <= r: |Delta sigma_1| <= r (Weyl), |Delta I1| <= sqrt(3) r,
+  // |Delta sqrt(J2 + eps)| <= r / sqrt(2) (its gradient is s / (2 q)), and
+  // J2(sigma + Delta) - J2(sigma) <= sqrt(2 J2) r + r^2 / 2 (J2 = |s|^2 / 2,
+  // the deviatoric part of Delta no longer than Delta). So phi_HTC grows by
+  // at most a r^2 + b r, and sigma_1 - ft by at most r.
+  const double a = 0.5 * f0 * std::abs(X[0]) * ifc * ifc;
+  const double b = f0 * ifc *
+                   (std::abs(X[0]) * ifc * std::sqrt(2.0 * J2) +
+                    std::abs(X[1]) / std::sqrt(2.0) + std::abs(X[2]) +
+                    std::sqrt(3.0) * std::abs(X[3]));
+  const double rH = 2.0 * gH / (b + std::sqrt(b * b + 4.0 * a * gH));
+  return (1.0 - 1e-9) * std::min(rH, gR);
+}
+
 Matrix6 HtcConcrete::elastic_tangent() const
 {
   Matrix6 D{};

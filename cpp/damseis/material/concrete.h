@@ -162,6 +162,15 @@ public:
   /// inside every surface for these internal variables at zero rates (a step
   /// ending there is elastic); always true in elastic mode.
   bool admissible(const Vector6& stress, double kappa_c, double kappa_t) const;
+  /// Radius r of a ball around `stress` that admissible() accepts whole:
+  /// every stress s with |s - stress|_F <= r (Frobenius norm of the tensor,
+  /// shears counted twice) passes admissible() for the same internal
+  /// variables; 0 if `stress` itself is not (safely) admissible, +inf in
+  /// elastic mode. From Lipschitz bounds of the yield functions (Weyl's
+  /// inequality for sigma_1, the quadratic growth of J2), with a round-off
+  /// guard: a cheap exact pre-test for points far from the surfaces.
+  double admissible_radius(const Vector6& stress, double kappa_c,
+                           double kappa_t) const;
 
   /// The five yield functions (stress units) and, if n != nullptr, their
   /// gradients in principal space; s: principal stresses (descending).
