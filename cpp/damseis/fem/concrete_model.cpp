@@ -184,6 +184,7 @@ ConcreteModel::ConcreteModel(
 
   _state.assign(np, material::State{});
   _trial = _state;
+  _ball.assign(np, ElasticBall{});
   _eps.assign(np, {0, 0, 0, 0, 0, 0});
   _eps_trial = _eps;
   _dep = _eps;
@@ -200,13 +201,11 @@ ConcreteModel::ConcreteModel(
   }
 }
 
-bool ConcreteModel::elastic_point(const material::HtcConcrete& m,
-                                  std::int32_t material,
-                                  const material::State& old,
-                                  const std::array<double, 6>& eps_old,
-                                  const double* e,
-                                  std::array<double, 6>& eps_new,
-                                  material::State& out, double* ct) const
+bool ConcreteModel::elastic_point(
+    const material::HtcConcrete& m, std::int32_t material,
+    const ElasticBall& ball, const material::State& old,
+    const std::array<double, 6>& eps_old, const double* e,
+    std::array<double, 6>& eps_new, material::State& out, double* ct) const
 {
   const material::Vector6 de = {
       e[0] - eps_old[0],
@@ -236,7 +235,18 @@ bool ConcreteModel::elastic_point(const material::HtcConcrete& m,
     if (std::abs(tr[2]) > 1e-8 * (smax + m.derived().ft0))
       return false;
   }
-  if (!m.admissible(tr, old.kappa_c, old.kappa_t))
+  bool inside = false;
+  if (ball.material == &m && ball.kappa_c == old.kappa_c &&
+      ball.kappa_t == old.kappa_t)
+  {
+    const auto& o = ball.centre;
+    double d2 = 0.0;
+    for (int i = 0; i < 3; ++i)
+      d2 += (tr[i] - o[i]) * (tr[i] - o[i]) +
+            2.0 * (tr[3 + i] - o[3 + i]) * (tr[3 + i] - o[3 + i]);
+    inside = d2 <= ball.r2;
+  }
+  if (!inside && !m.admissible(tr, old.kappa_c, old.kappa_t))
     return false;
   out = old;
   out.stress = tr;
@@ -352,7 +362,7 @@ MaterialUpdateStats ConcreteModel::update_points(double dt)
       const std::size_t p = static_cast<std::size_t>(c) * _nq + q;
       const std::int32_t dof = _dof[p];
       double* ct_p = &ct[9 * _dof_c[p]];
-      if (elastic_point(m, _cell_material[c], _state[p], _eps[p],
+      if (elastic_point(m, _cell_material[c], _ball[p], _state[p], _eps[p],
                         &_strain_values[3 * p], _eps_trial[p], _trial[p], ct_p))
       {
         for (int i = 0; i < 3; ++i)
@@ -522,6 +532,32 @@ bool ConcreteModel::accept(MaterialUpdateStats* implicit)
   _eps.swap(_eps_trial);
   _trial = _state;
   _eps_trial = _eps;
+  // Elastic balls around the new states, where the old ball no longer
+  // holds (other internal variables or material) or the stress has moved
+  // past half its radius (most points of a dam keep theirs for many steps).
+  for (std::int32_t c = 0; c < _num_cells; ++c)
+  {
+    const auto& m = _trial_dt > 0.0 ? *_dynamic[_cell_material[c]]
+                                    : *_static[_cell_material[c]];
+    for (int q = 0; q < _nq; ++q)
+    {
+      const std::size_t p = static_cast<std::size_t>(c) * _nq + q;
+      const material::State& s = _state[p];
+      ElasticBall& b = _ball[p];
+      if (b.material == &m && b.kappa_c == s.kappa_c && b.kappa_t == s.kappa_t)
+      {
+        double d2 = 0.0;
+        for (int i = 0; i < 3; ++i)
+          d2 += (s.stress[i] - b.centre[i]) * (s.stress[i] - b.centre[i]) +
+                2.0 * (s.stress[3 + i] - b.centre[3 + i]) *
+                    (s.stress[3 + i] - b.centre[3 + i]);
+        if (d2 <= 0.25 * b.r2)
+          continue;
+      }
+      const double r = m.admissible_radius(s.stress, s.kappa_c, s.kappa_t);
+      b = {s.stress, r > 0.0 ? r * r : -1.0, s.kappa_c, s.kappa_t, &m};
+    }
+  }
   return true;
 }
 

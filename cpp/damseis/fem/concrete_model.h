@@ -139,8 +139,20 @@ private:
   /// point (plane stress: with the elastic out-of-plane strain) is
   /// admissible, the elastic update into `out`, eps_new and ct, and true;
   /// else false and nothing written (integrate_point() then does the work).
+  /// A ball of stresses around a point's committed stress that the
+  /// elastic-trial test (HtcConcrete::admissible) accepts whole
+  /// (HtcConcrete::admissible_radius), valid for the material object and
+  /// internal variables it was made with: a trial stress inside it skips
+  /// the test with the same answer.
+  struct ElasticBall
+  {
+    material::Vector6 centre{};
+    double r2 = -1.0; ///< squared radius (< 0: none)
+    double kappa_c = 0.0, kappa_t = 0.0;
+    const material::HtcConcrete* material = nullptr;
+  };
   bool elastic_point(const material::HtcConcrete& m, std::int32_t material,
-                     const material::State& old,
+                     const ElasticBall& ball, const material::State& old,
                      const std::array<double, 6>& eps_old,
                      const double* eps_new_plane,
                      std::array<double, 6>& eps_new, material::State& out,
@@ -175,6 +187,7 @@ private:
   std::vector<std::int32_t> _dof_c;         ///< point p -> Cq dof (block)
   // Committed and trial states, per point p = cell * nq + q.
   std::vector<material::State> _state, _trial;
+  std::vector<ElasticBall> _ball; ///< per point p, around _state[p]
   std::vector<std::array<double, 6>> _eps, _eps_trial;
   std::vector<double> _sig_committed, _coords, _strain_values;
   std::array<std::vector<double>, 5> _out;
