@@ -59,6 +59,10 @@ public:
   std::int64_t substepped = 0;       ///< sub-stepped point updates, all trials
   /// return maps and local Newton iterations, all trials
   std::int64_t return_maps = 0, local_iterations = 0;
+  /// points that left the elastic fast path and their update time
+  /// (core-seconds), all trials
+  std::int64_t returned_points = 0;
+  double return_map_seconds = 0.0;
 
 private:
   void count(const fem::MaterialUpdateStats& s)
@@ -66,6 +70,8 @@ private:
     substepped += s.substepped;
     return_maps += s.return_maps;
     local_iterations += s.local_iterations;
+    returned_points += s.returned_points;
+    return_map_seconds += s.return_map_seconds;
   }
   fem::ConcreteModel& _m;
   dolfinx::fem::Function<double> _u;

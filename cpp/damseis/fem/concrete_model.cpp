@@ -1,5 +1,6 @@
 #include "concrete_model.h"
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -346,7 +347,8 @@ MaterialUpdateStats ConcreteModel::update_points(double dt)
 {
   std::span<double> sig = _sig->x()->mutable_array();
   std::span<double> ct = _Ct->x()->mutable_array();
-  std::int64_t counts[6] = {0, 0, 0, 0, 0, 0};
+  std::int64_t counts[7] = {0, 0, 0, 0, 0, 0, 0};
+  double seconds = 0.0; // owned points' return maps
   int max_it = 0;
   // A trial with a failed point is discarded by the caller (the line search
   // shortens the step, or the step is cut): the update stops at the first
@@ -377,9 +379,17 @@ MaterialUpdateStats ConcreteModel::update_points(double dt)
       }
       int maps = 0;
       std::int64_t its = 0;
+      const auto t0 = std::chrono::steady_clock::now();
       const material::Update up =
           integrate_point(m, _state[p], _eps[p], &_strain_values[3 * p], dt,
                           _eps_trial[p], ct_p, maps, its);
+      if (c < _num_owned_cells)
+      {
+        seconds +=
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
+                .count();
+        ++counts[6];
+      }
       _trial[p] = up.state;
       for (int i = 0; i < 3; ++i)
         sig[3 * dof + i] = up.state.stress[plane_index[i]];
@@ -417,9 +427,10 @@ MaterialUpdateStats ConcreteModel::update_points(double dt)
     }
   }
   MaterialUpdateStats s;
-  std::int64_t total[6];
+  std::int64_t total[7];
   MPI_Comm comm = _fe.mesh()->comm();
-  MPI_Allreduce(counts, total, 6, MPI_INT64_T, MPI_SUM, comm);
+  MPI_Allreduce(counts, total, 7, MPI_INT64_T, MPI_SUM, comm);
+  MPI_Allreduce(&seconds, &s.return_map_seconds, 1, MPI_DOUBLE, MPI_SUM, comm);
   MPI_Allreduce(&max_it, &s.max_iterations, 1, MPI_INT, MPI_MAX, comm);
   s.points = total[0];
   s.inelastic = total[1];
@@ -427,6 +438,7 @@ MaterialUpdateStats ConcreteModel::update_points(double dt)
   s.substepped = total[3];
   s.return_maps = total[4];
   s.local_iterations = total[5];
+  s.returned_points = total[6];
   return s;
 }
 

@@ -28,6 +28,10 @@ struct MaterialUpdateStats
   /// iteration on sigma_zz = 0) and their local Newton iterations, at the
   /// points that left the elastic fast path
   std::int64_t return_maps = 0, local_iterations = 0;
+  /// points that left the elastic fast path (owned, all ranks), and the
+  /// seconds their updates took (summed over ranks: core-seconds)
+  std::int64_t returned_points = 0;
+  double return_map_seconds = 0.0;
   int max_iterations = 0; ///< largest local Newton count
 };
 
