@@ -22,6 +22,29 @@ Vector6 triaxial(double fc, double xi0, double rho0)
   const double s12 = so + to / std::sqrt(2.0);
   return principal(s12, s12, so - std::sqrt(2.0) * to);
 }
+
+/// Internal variables of the elastic-trial tests: untouched, softened in
+/// compression, in tension, in both.
+const std::pair<double, double> test_kappas[] = {
+    {0.0, 0.0}, {2e-4, 0.0}, {0.0, 5e-5}, {1e-3, 3e-4}};
+
+/// Random stress number i: half plane states (the 2D models' points), half
+/// general ones; magnitudes from the tensile to past the compressive
+/// strength fc0.
+Vector6 random_stress(int i, double fc0, std::mt19937& g)
+{
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const double s = (i % 4 < 2 ? 0.3 : 1.3) * fc0;
+  Vector6 st = {s * u(g), s * u(g), s * u(g), 0.5 * s * u(g), 0, 0};
+  if (i % 2)
+  {
+    st[4] = 0.5 * s * u(g);
+    st[5] = 0.5 * s * u(g);
+  }
+  else
+    st[2] = 0.0;
+  return st;
+}
 } // namespace
 
 // Reference: the calibration conditions themselves (algorithms.md 1.2 table);
@@ -134,29 +157,17 @@ TEST(HtcConcreteSurface, InitialSurfaceThroughCalibrationPoints)
 TEST(HtcConcreteSurface, ElasticTrialTestAgreesWithYieldValue)
 {
   std::mt19937 g(2024);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
   for (Mode mode : {Mode::plastic, Mode::viscoplastic})
   {
     ConcreteParameters p;
     p.mode = mode;
     const HtcConcrete m(p);
     int checked = 0, in = 0, out = 0, band = 0;
-    for (auto [kc, kt] : {std::pair{0.0, 0.0}, std::pair{2e-4, 0.0},
-                          std::pair{0.0, 5e-5}, std::pair{1e-3, 3e-4}})
+    for (auto [kc, kt] : test_kappas)
     {
       for (int i = 0; i < 20000; ++i)
       {
-        // Half plane states (the 2D models' points), half general ones;
-        // magnitudes from the tensile to past the compressive strength.
-        const double s = (i % 4 < 2 ? 0.3 : 1.3) * p.fc0;
-        Vector6 st = {s * u(g), s * u(g), s * u(g), 0.5 * s * u(g), 0, 0};
-        if (i % 2)
-        {
-          st[4] = 0.5 * s * u(g);
-          st[5] = 0.5 * s * u(g);
-        }
-        else
-          st[2] = 0.0;
+        const Vector6 st = random_stress(i, p.fc0, g);
         const double f = m.yield_value(st, kc, kt, 0.0, 0.0);
         if (std::abs(f) < 1e-8)
         {
@@ -209,20 +220,11 @@ TEST(HtcConcreteSurface, AdmissibleRadiusIsInsideTheSurfaces)
     const HtcConcrete m(p);
     int balls = 0, probes = 0;
     std::vector<double> tightness;
-    for (auto [kc, kt] : {std::pair{0.0, 0.0}, std::pair{2e-4, 0.0},
-                          std::pair{0.0, 5e-5}, std::pair{1e-3, 3e-4}})
+    for (auto [kc, kt] : test_kappas)
     {
       for (int i = 0; i < 4000; ++i)
       {
-        const double s = (i % 4 < 2 ? 0.3 : 1.3) * p.fc0;
-        Vector6 st = {s * u(g), s * u(g), s * u(g), 0.5 * s * u(g), 0, 0};
-        if (i % 2)
-        {
-          st[4] = 0.5 * s * u(g);
-          st[5] = 0.5 * s * u(g);
-        }
-        else
-          st[2] = 0.0;
+        const Vector6 st = random_stress(i, p.fc0, g);
         const double r = m.admissible_radius(st, kc, kt);
         if (r == 0.0)
         {
