@@ -5,7 +5,8 @@
 # writes bench/results/<name>-nonlinear-<date>.md from the three summaries.
 #   bench/run_nonlinear.sh [BUILD_DIR] [EXECUTABLE] [CASE] [--set ...]
 # BENCH_TAG=x appends -x to the report's name (e.g. a run with
-# --set solver.material_integration=implex).
+# --set solver.material_integration=implex); an existing report is kept and
+# the new one gets -2, -3, ... after the date.
 # Run by hand on an otherwise idle machine (it takes minutes).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -16,6 +17,12 @@ shift $(( $# < 3 ? $# : 3 ))
 out=$root/bench/results
 mkdir -p "$out"
 report=$out/$exe-nonlinear${BENCH_TAG:+-$BENCH_TAG}-$(date +%Y-%m-%d).md
+# Never overwrite a report (it may carry notes by hand): -2, -3, ...
+k=2
+while [ -e "$report" ]; do
+  report=$out/$exe-nonlinear${BENCH_TAG:+-$BENCH_TAG}-$(date +%Y-%m-%d)-$k.md
+  k=$((k + 1))
+done
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 "$build/bin/$exe" --case "$case" --out "$work" --set output.plots=false \
@@ -25,7 +32,7 @@ trap 'rm -rf "$work"' EXIT
 "$build/bin/$exe" --case "$case" --out "$work/linear" --set output.plots=false \
   --set output.every=100000 --set study.table1=false \
   --set material.model=linear "$@" >>"$work.log" 2>&1
-/usr/bin/python3 - "$work" "$case" "$report" <<'PY'
+/usr/bin/python3 - "$work" "${case#"$root"/}" "$report" <<'PY'
 import json, os, sys, subprocess
 work, case, report = sys.argv[1:4]
 rows = []
