@@ -37,6 +37,17 @@ struct RowMajor
 /// (xx, yy, xy).
 constexpr int plane_index[3] = {0, 1, 3};
 
+/// |a - b|^2 in the Frobenius norm of the stress tensors (Voigt 6, shears
+/// counted twice): the norm of HtcConcrete::admissible_radius.
+double tensor_distance2(const material::Vector6& a, const material::Vector6& b)
+{
+  double d2 = 0.0;
+  for (int i = 0; i < 3; ++i)
+    d2 += (a[i] - b[i]) * (a[i] - b[i]) +
+          2.0 * (a[3 + i] - b[3 + i]) * (a[3 + i] - b[3 + i]);
+  return d2;
+}
+
 /// Largest absolute principal value of a strain (rate) in Voigt form with
 /// engineering shear; plane: xy only.
 double max_abs_principal_strain(const std::array<double, 6>& e)
@@ -236,17 +247,9 @@ bool ConcreteModel::elastic_point(
     if (std::abs(tr[2]) > 1e-8 * (smax + m.derived().ft0))
       return false;
   }
-  bool inside = false;
-  if (ball.material == &m && ball.kappa_c == old.kappa_c &&
-      ball.kappa_t == old.kappa_t)
-  {
-    const auto& o = ball.centre;
-    double d2 = 0.0;
-    for (int i = 0; i < 3; ++i)
-      d2 += (tr[i] - o[i]) * (tr[i] - o[i]) +
-            2.0 * (tr[3 + i] - o[3 + i]) * (tr[3 + i] - o[3 + i]);
-    inside = d2 <= ball.r2;
-  }
+  const bool inside = ball.material == &m && ball.kappa_c == old.kappa_c &&
+                      ball.kappa_t == old.kappa_t &&
+                      tensor_distance2(tr, ball.centre) <= ball.r2;
   if (!inside && !m.admissible(tr, old.kappa_c, old.kappa_t))
     return false;
   out = old;
@@ -556,15 +559,11 @@ bool ConcreteModel::accept(MaterialUpdateStats* implicit)
       const std::size_t p = static_cast<std::size_t>(c) * _nq + q;
       const material::State& s = _state[p];
       ElasticBall& b = _ball[p];
-      if (b.material == &m && b.kappa_c == s.kappa_c && b.kappa_t == s.kappa_t)
+      if (b.material == &m && b.kappa_c == s.kappa_c &&
+          b.kappa_t == s.kappa_t &&
+          tensor_distance2(s.stress, b.centre) <= 0.25 * b.r2)
       {
-        double d2 = 0.0;
-        for (int i = 0; i < 3; ++i)
-          d2 += (s.stress[i] - b.centre[i]) * (s.stress[i] - b.centre[i]) +
-                2.0 * (s.stress[3 + i] - b.centre[3 + i]) *
-                    (s.stress[3 + i] - b.centre[3 + i]);
-        if (d2 <= 0.25 * b.r2)
-          continue;
+        continue;
       }
       const double r = m.admissible_radius(s.stress, s.kappa_c, s.kappa_t);
       b = {s.stress, r > 0.0 ? r * r : -1.0, s.kappa_c, s.kappa_t, &m};
