@@ -195,6 +195,35 @@ Vector6 outer_vec(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
           0.5 * (a[1] * b[2] + a[2] * b[1]),
           0.5 * (a[0] * b[2] + a[2] * b[0])};
 }
+
+/// The elastic trial stress old + De de.
+Vector6 trial_stress(const Vector6& old, const Matrix6& De, const Vector6& de)
+{
+  Vector6 tr;
+  for (int i = 0; i < 6; ++i)
+  {
+    double s = old[i];
+    for (int j = 0; j < 6; ++j)
+      s += De[i * 6 + j] * de[j];
+    tr[i] = s;
+  }
+  return tr;
+}
+
+/// Adds the plastic strain of a return, D^-1 (trial - returned stress)
+/// (engineering shear), to ep.
+void add_plastic_strain(Vector6& ep, const Vector6& tr, const Vector6& s,
+                        double E, double nu, double G)
+{
+  Vector6 ds;
+  for (int a = 0; a < 6; ++a)
+    ds[a] = tr[a] - s[a];
+  const double tr_ds = ds[0] + ds[1] + ds[2];
+  for (int a = 0; a < 3; ++a)
+    ep[a] += ((1.0 + nu) * ds[a] - nu * tr_ds) / E;
+  for (int a = 3; a < 6; ++a)
+    ep[a] += ds[a] / G;
+}
 } // namespace
 
 std::string active_set_name(unsigned a)
@@ -1433,14 +1462,7 @@ Update HtcConcrete::integrate_step(const State& old, const Vector6& de,
   Update u;
   u.state = old;
   const Matrix6 De = elastic_tangent();
-  Vector6 tr;
-  for (int i = 0; i < 6; ++i)
-  {
-    double s = old.stress[i];
-    for (int j = 0; j < 6; ++j)
-      s += De[i * 6 + j] * de[j];
-    tr[i] = s;
-  }
+  const Vector6 tr = trial_stress(old.stress, De, de);
   u.state.stress = tr;
   u.state.kappa_c_rate = u.state.kappa_t_rate = 0.0;
   u.tangent = De;
@@ -1649,16 +1671,7 @@ Update HtcConcrete::integrate_step(const State& old, const Vector6& de,
   ns.kappa_t = x[4];
   ns.kappa_c_rate = dt > 0 ? (x[3] - old.kappa_c) / dt : 0.0;
   ns.kappa_t_rate = dt > 0 ? (x[4] - old.kappa_t) / dt : 0.0;
-  {
-    Vector6 ds;
-    for (int a = 0; a < 6; ++a)
-      ds[a] = tr[a] - ns.stress[a];
-    const double tr_ds = ds[0] + ds[1] + ds[2];
-    for (int a = 0; a < 3; ++a)
-      ns.plastic_strain[a] += ((1.0 + d_.nu) * ds[a] - d_.nu * tr_ds) / d_.E;
-    for (int a = 3; a < 6; ++a)
-      ns.plastic_strain[a] += ds[a] / d_.G;
-  }
+  add_plastic_strain(ns.plastic_strain, tr, ns.stress, d_.E, d_.nu, d_.G);
 
   // Consistent tangent: d(sigma)/d(sigma_tr) of the coaxial return (the
   // principal part from the converged Jacobian), times D.
@@ -1787,15 +1800,7 @@ bool HtcConcrete::plane_stress_tension(const State& old, Vector6& de, double dt,
   // sigma_33 = lambda (tr de - mu) + 2G de_33 + sigma_33,old = 0 (the flow
   // n1 n1 has no 33 part and trace 1).
   de[2] = -(lam * (de[0] + de[1] - mu) + old.stress[2]) / (lam + 2.0 * G);
-  const Matrix6 De = elastic_tangent();
-  Vector6 tr;
-  for (int i = 0; i < 6; ++i)
-  {
-    double s = old.stress[i];
-    for (int j = 0; j < 6; ++j)
-      s += De[i * 6 + j] * de[j];
-    tr[i] = s;
-  }
+  const Vector6 tr = trial_stress(old.stress, elastic_tangent(), de);
   u = Update{};
   State& ns = u.state;
   ns = old;
@@ -1806,16 +1811,7 @@ bool HtcConcrete::plane_stress_tension(const State& old, Vector6& de, double dt,
   ns.kappa_c = kc0;
   ns.kappa_t_rate = ktd;
   ns.kappa_c_rate = 0.0;
-  {
-    Vector6 ds;
-    for (int a = 0; a < 6; ++a)
-      ds[a] = tr[a] - ns.stress[a];
-    const double tr_ds = ds[0] + ds[1] + ds[2];
-    for (int a = 0; a < 3; ++a)
-      ns.plastic_strain[a] += ((1.0 + nu) * ds[a] - nu * tr_ds) / E;
-    for (int a = 3; a < 6; ++a)
-      ns.plastic_strain[a] += ds[a] / G;
-  }
+  add_plastic_strain(ns.plastic_strain, tr, ns.stress, E, nu, G);
   const std::array<double, 3> x3 = {x1, x2, 0.0};
   std::array<double, 9> C = {1.0 - a1 / den, 0.0, 0.0, -lam / den, 1.0, 0.0,
                              -lam / den,     0.0, 1.0};
