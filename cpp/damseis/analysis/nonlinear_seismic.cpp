@@ -250,12 +250,12 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   const int n = s.steps;
   const double dt = s.scheme.dt;
   std::vector<double> hist(2 * dim * (n + 1), 0.0);
-  // Newton statistics: iterations, tangents, cuts (sums), max iterations.
   // Newton statistics of the time history (checkpointed): iterations,
   // tangent factorisations, cuts, max iterations in a step, max inelastic
   // points, GMRES iterations, seconds in residuals, tangent assembly,
   // factorisations and direction solves, sub-stepped point updates, return
-  // maps, local Newton iterations.
+  // maps, local Newton iterations, points that left the elastic fast path
+  // and the core-seconds of their updates.
   std::vector<double> stats(15, 0.0);
 
   int k0 = 0;
