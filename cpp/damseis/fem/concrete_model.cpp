@@ -360,8 +360,7 @@ MaterialUpdateStats ConcreteModel::update_points(double dt)
   _tangent_cells.clear();
   for (std::int32_t c = 0; c < _num_cells && !failed; ++c)
   {
-    const auto& m =
-        dt > 0.0 ? *_dynamic[_cell_material[c]] : *_static[_cell_material[c]];
+    const auto& m = material_of(c, dt);
     for (int q = 0; q < _nq; ++q)
     {
       const std::size_t p = static_cast<std::size_t>(c) * _nq + q;
@@ -552,8 +551,7 @@ bool ConcreteModel::accept(MaterialUpdateStats* implicit)
   // past half its radius (most points of a dam keep theirs for many steps).
   for (std::int32_t c = 0; c < _num_cells; ++c)
   {
-    const auto& m = _trial_dt > 0.0 ? *_dynamic[_cell_material[c]]
-                                    : *_static[_cell_material[c]];
+    const auto& m = material_of(c, _trial_dt);
     for (int q = 0; q < _nq; ++q)
     {
       const std::size_t p = static_cast<std::size_t>(c) * _nq + q;

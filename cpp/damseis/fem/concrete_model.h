@@ -137,12 +137,6 @@ private:
   /// The in-plane 3x3 tangent (xx, yy, xy) of a 6x6 one into ct (plane
   /// stress: sigma_zz = 0 condensed out).
   void condense(const material::Matrix6& T, double* ct) const;
-  /// One point: old state and total strain (Voigt 6) -> new state; the
-  /// condensed 3x3 tangent into `ct`. Returns the update.
-  /// The common case of integrate_point(): if the elastic trial of the
-  /// point (plane stress: with the elastic out-of-plane strain) is
-  /// admissible, the elastic update into `out`, eps_new and ct, and true;
-  /// else false and nothing written (integrate_point() then does the work).
   /// A ball of stresses around a point's committed stress that the
   /// elastic-trial test (HtcConcrete::admissible) accepts whole
   /// (HtcConcrete::admissible_radius), valid for the material object and
@@ -155,12 +149,25 @@ private:
     double kappa_c = 0.0, kappa_t = 0.0;
     const material::HtcConcrete* material = nullptr;
   };
+  /// The material object of local cell c for a step of length dt (> 0:
+  /// dynamic; 0: the static stage).
+  const material::HtcConcrete& material_of(std::int32_t c, double dt) const
+  {
+    return dt > 0.0 ? *_dynamic[_cell_material[c]]
+                    : *_static[_cell_material[c]];
+  }
+  /// The common case of integrate_point(): if the elastic trial of the
+  /// point (plane stress: with the elastic out-of-plane strain) is
+  /// admissible, the elastic update into `out`, eps_new and ct, and true;
+  /// else false and nothing written (integrate_point() then does the work).
   bool elastic_point(const material::HtcConcrete& m, std::int32_t material,
                      const ElasticBall& ball, const material::State& old,
                      const std::array<double, 6>& eps_old,
                      const double* eps_new_plane,
                      std::array<double, 6>& eps_new, material::State& out,
                      double* ct) const;
+  /// One point: old state and total strain (Voigt 6) -> new state; the
+  /// condensed 3x3 tangent into `ct`. Returns the update.
   material::Update integrate_point(const material::HtcConcrete& m,
                                    const material::State& old,
                                    const std::array<double, 6>& eps_old,
