@@ -350,15 +350,28 @@ HtcConcrete::HtcConcrete(const ConcreteParameters& p) : p_(p)
   rate_on_ = p.mode == Mode::viscoplastic && p.rate_law != RateLaw::none;
   log_c_ = rate_on_ && d_.rate_c.law == RateLaw::ceb_fip;
   log_t_ = rate_on_ && d_.rate_t.law == RateLaw::ceb_fip;
-  // admissible()'s virgin point: what surfaces() computes at kappa = 0 and
-  // zero rates (R = 1), by the same expressions.
-  const double fc_v = d_.fc0 * hc(0.0) * 1.0;
-  virgin_ft_ = d_.ft0 * std::exp(-0.0 / d_.kappa_tu) * 1.0;
-  const double ftH_v =
-      vmin(vmax((1.0 + p_.htc_tension_offset) * virgin_ft_, p_.rho_min * fc_v),
-           p_.rho_max * fc_v);
-  virgin_ifc_ = 1.0 / fc_v;
-  virgin_htc_ = family_.coefficients(ftH_v * virgin_ifc_);
+  // admissible()'s untouched point (virgin_ifc_ is 0 until then).
+  rest_strengths(0.0, 0.0, virgin_ft_, virgin_ifc_, virgin_htc_);
+}
+
+void HtcConcrete::rest_strengths(double kc, double kt, double& ft, double& ifc,
+                                 std::array<double, 4>& X) const
+{
+  if (kc == 0.0 && kt == 0.0 && virgin_ifc_ > 0.0)
+  {
+    ft = virgin_ft_;
+    ifc = virgin_ifc_;
+    X = virgin_htc_;
+    return;
+  }
+  // surfaces() with R = 1 (its zero-rate case), by the same expressions.
+  const double fc = d_.fc0 * hc(kc);
+  ft = d_.ft0 * std::exp(-kt / d_.kappa_tu);
+  const double ftH =
+      vmin(vmax((1.0 + p_.htc_tension_offset) * ft, p_.rho_min * fc),
+           p_.rho_max * fc);
+  ifc = 1.0 / fc;
+  X = family_.coefficients(ftH * ifc);
 }
 
 template <class T>
@@ -1705,19 +1718,11 @@ bool HtcConcrete::admissible(const Vector6& stress, double kappa_c,
   if (p_.mode == Mode::elastic)
     return true;
   const double tol_f = p_.tolerance * d_.fc0;
+  double ft, ifc;
+  std::array<double, 4> X;
+  rest_strengths(kappa_c, kappa_t, ft, ifc, X);
   std::array<double, 5> phi;
-  if (kappa_c == 0.0 && kappa_t == 0.0)
-  {
-    // Virgin point (most points of a dam): the strengths and HTC
-    // coefficients surfaces() would compute there, made once.
-    surfaces_at<double>(principal_fast(stress), virgin_ft_, virgin_ifc_,
-                        virgin_htc_, phi, nullptr);
-  }
-  else
-  {
-    surfaces<double>(principal_fast(stress), kappa_c, kappa_t, 0.0, 0.0, phi,
-                     nullptr);
-  }
+  surfaces_at<double>(principal_fast(stress), ft, ifc, X, phi, nullptr);
   return phi[0] <= tol_f && phi[2] <= tol_f;
 }
 
@@ -1726,20 +1731,10 @@ double HtcConcrete::admissible_radius(const Vector6& stress, double kappa_c,
 {
   if (p_.mode == Mode::elastic)
     return HUGE_VAL;
-  // Strengths and HTC coefficients at zero rates, as admissible() has them
-  // (the same expressions as surfaces()).
-  double ft = virgin_ft_, ifc = virgin_ifc_;
-  std::array<double, 4> X = virgin_htc_;
-  if (!(kappa_c == 0.0 && kappa_t == 0.0))
-  {
-    const double fc = d_.fc0 * hc(kappa_c);
-    ft = d_.ft0 * std::exp(-kappa_t / d_.kappa_tu);
-    const double ftH =
-        vmin(vmax((1.0 + p_.htc_tension_offset) * ft, p_.rho_min * fc),
-             p_.rho_max * fc);
-    ifc = 1.0 / fc;
-    X = family_.coefficients(ftH * ifc);
-  }
+  // The surfaces admissible() tests.
+  double ft, ifc;
+  std::array<double, 4> X;
+  rest_strengths(kappa_c, kappa_t, ft, ifc, X);
   const std::array<double, 3> s = principal_fast(stress);
   std::array<double, 5> phi;
   surfaces_at<double>(s, ft, ifc, X, phi, nullptr);

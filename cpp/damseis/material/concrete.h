@@ -239,9 +239,12 @@ private:
   HtcFamily family_;
   bool rate_on_ = false;
   bool log_c_ = false, log_t_ = false; ///< log-rate unknowns (power law)
-  /// ft, 1 / fc and the HTC coefficients at kappa_c = kappa_t = 0 and zero
-  /// rates, as surfaces() computes them (admissible()'s common case).
-  double virgin_ft_ = 0.0, virgin_ifc_ = 0.0;
+  /// ft, 1 / fc and the HTC coefficients for internal variables kc, kt at
+  /// zero rates, as surfaces() computes them (the surfaces of admissible());
+  /// those of the untouched point (most points of a dam) made once.
+  void rest_strengths(double kc, double kt, double& ft, double& ifc,
+                      std::array<double, 4>& X) const;
+  double virgin_ft_ = 0.0, virgin_ifc_ = 0.0; ///< 0: not made yet
   std::array<double, 4> virgin_htc_{};
 };
 
