@@ -63,4 +63,11 @@ except FileNotFoundError:
     pass
 assert diff < tol and fdiff < 1e-8 and sdiff < tol
 assert ediff < tol and cdiff < 1e-8  # CSV files carry 10 digits
+# IMPL-EX: its equilibrium error (assembled across the ranks) as well.
+if "implex_equilibrium_error" in sa:
+    ia, ib = sa["implex_equilibrium_error"], sb["implex_equilibrium_error"]
+    idiff = max(abs(ia[k] - ib[k]) / ia[k] for k in ("rms", "max"))
+    print(f"IMPL-EX equilibrium error rms {ia['rms']:.4e} / {ib['rms']:.4e}, "
+          f"max {ia['max']:.4e} / {ib['max']:.4e}")
+    assert ia["max"] > 0 and idiff < tol
 PY

@@ -39,6 +39,17 @@ print(f"restart from step {sb['restarted_from_step']}: crest history rel. diff "
       f"{diff:.2e}, extremes {sdiff:.2e}")
 assert sb["restarted_from_step"] == 170
 assert diff < 1e-9 and sdiff < 1e-9
+# Run statistics cover all steps, also after a restart.
+if "newton" in sa:
+    na, nb = sa["newton"], sb["newton"]
+    print(f"Newton iterations per step {na['iterations_per_step']:.4f} / "
+          f"{nb['iterations_per_step']:.4f}")
+    assert abs(na["iterations_per_step"] - nb["iterations_per_step"]) < 1e-12
+if "implex_equilibrium_error" in sa:
+    ia, ib = sa["implex_equilibrium_error"], sb["implex_equilibrium_error"]
+    print(f"IMPL-EX equilibrium error rms {ia['rms']:.4e} / {ib['rms']:.4e}")
+    assert abs(ia["rms"] - ib["rms"]) <= 1e-9 * ia["rms"]
+    assert abs(ia["max"] - ib["max"]) <= 1e-9 * ia["max"]
 for name in ("displacement_envelope.csv", "dam_points.csv"):
     try:
         ea = np.genfromtxt(f"{a}/{name}", delimiter=",", names=True)

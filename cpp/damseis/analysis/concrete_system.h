@@ -33,6 +33,11 @@ public:
   {
     return last.inelastic == 0 || _m.trial_extrapolated();
   }
+  bool trial_extrapolated() const override { return _m.trial_extrapolated(); }
+  void extrapolation_change(Vec f) override
+  {
+    _m.assemble_extrapolation_change(f);
+  }
   bool set_extrapolation(bool on) override
   {
     _m.set_implex(on);

@@ -255,8 +255,9 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   // points, GMRES iterations, seconds in residuals, tangent assembly,
   // factorisations and direction solves, sub-stepped point updates, return
   // maps, local Newton iterations, points that left the elastic fast path
-  // and the core-seconds of their updates.
-  std::vector<double> stats(15, 0.0);
+  // and the core-seconds of their updates; IMPL-EX equilibrium error: sum of
+  // squares, largest, its time.
+  std::vector<double> stats(18, 0.0);
 
   int k0 = 0;
   const std::filesystem::path ckpt_dir = out_dir / "checkpoint";
@@ -291,7 +292,7 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     face_u.restore(restart->arrays.at("face_u"));
     hist = restart->arrays.at("history");
     stats = restart->arrays.at("newton");
-    stats.resize(15, 0.0);
+    stats.resize(18, 0.0);
     results::print(comm, "restarting from the checkpoint at step " +
                              std::to_string(k0));
   }
@@ -415,6 +416,12 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     stats[12] += static_cast<double>(system.local_iterations);
     stats[13] += static_cast<double>(system.returned_points);
     stats[14] += system.return_map_seconds;
+    stats[15] += rep.extrapolation_error * rep.extrapolation_error;
+    if (rep.extrapolation_error > stats[16])
+    {
+      stats[16] = rep.extrapolation_error;
+      stats[17] = k * dt;
+    }
     system.substepped = system.return_maps = system.local_iterations = 0;
     system.returned_points = 0;
     system.return_map_seconds = 0.0;
@@ -472,7 +479,8 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   const auto syy_hi = scalar_extreme(comm, syy_max, cm.coordinates(), in_dam);
   const auto syy_lo = scalar_extreme(comm, syy_min, cm.coordinates(), in_dam);
 
-  const int steps_run = std::max(1, n - k0);
+  // The Newton statistics cover every step (restored at a restart).
+  const int steps_all = std::max(1, n);
   const auto& p = concrete.params;
   json summary =
       seismic_summary(comm, fe, s, modal, added != nullptr, crest.node(),
@@ -512,7 +520,7 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
       {"static_iterations", static_g.iterations + static_r.iterations},
       {"static_cuts", static_g.cuts + static_r.cuts},
       {"iterations", stats[0]},
-      {"iterations_per_step", stats[0] / steps_run},
+      {"iterations_per_step", stats[0] / steps_all},
       {"max_iterations_in_a_step", stats[3]},
       {"tangent_factorizations", stats[1]},
       {"krylov_iterations", stats[5]},
@@ -533,10 +541,19 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
         {"return_maps_core_seconds", stats[14]}}},
       {"step_cuts", stats[2]},
       {"max_inelastic_points", stats[4]}};
+  if (concrete.implex)
+  {
+    // How far the implicit stresses of the IMPL-EX steps are from
+    // equilibrium, in the units of the Newton tolerance (README).
+    summary["implex_equilibrium_error"] = {
+        {"rms", std::sqrt(stats[15] / steps_all)},
+        {"max", stats[16]},
+        {"t_of_max", stats[17]}};
+  }
   summary["wall_seconds"] = seconds_since(wall_start);
   print_summary_line(comm, summary,
                      ", Newton iterations per step " +
-                         std::to_string(stats[0] / steps_run));
+                         std::to_string(stats[0] / steps_all));
   return summary;
 }
 } // namespace damseis::analysis

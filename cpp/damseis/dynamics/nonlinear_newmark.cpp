@@ -471,8 +471,19 @@ bool NonlinearNewmark::solve_step(double dt, Vec f_next, int level,
   // Accept: newton() returns true right after evaluating the residual at
   // the converged _ut, so _vt, _at, _fint_t and the system's trial state
   // belong to it.
+  const bool extrapolated = _system.trial_extrapolated();
   if (!_system.accept())
     return false;
+  if (extrapolated)
+  {
+    // The implicit stresses' equilibrium error: the step's solution
+    // balances the extrapolated ones exactly (to the solver tolerance).
+    _system.extrapolation_change(_tmp);
+    double e = 0.0;
+    VecNorm(_tmp, NORM_2, &e);
+    report.extrapolation_error =
+        std::max(report.extrapolation_error, w * e / reference);
+  }
   VecCopy(_ut, _u);
   VecCopy(_vt, _v);
   VecCopy(_at, _a);

@@ -78,6 +78,13 @@ public:
   /// Switches extrapolated (IMPL-EX) trials on or off; false if the system
   /// cannot extrapolate (nothing changed).
   virtual bool set_extrapolation(bool) { return false; }
+  /// True if the last trial was extrapolated (IMPL-EX): accept() then
+  /// replaces its stresses by the implicit ones.
+  virtual bool trial_extrapolated() const { return false; }
+  /// After accept() of an extrapolated trial: f_int(implicit stresses) -
+  /// f_int(extrapolated stresses) (layout of K0's columns, zero at fixed
+  /// dofs).
+  virtual void extrapolation_change(Vec f) { VecSet(f, 0.0); }
 };
 
 /// Work of one (possibly cut) step.
@@ -89,6 +96,10 @@ struct StepReport
   int initial_factorizations = 0; ///< effective matrices for cut steps
   int cuts = 0;                   ///< sub-steps beyond the first
   double residual = 0.0;          ///< final ||R|| / ||F_ext||
+  /// IMPL-EX steps: the equilibrium error of the implicit stresses at the
+  /// step's solution, (1 + alpha) ||f_int(implicit) - f_int(extrapolated)||
+  /// / ||F_ext|| (largest over the sub-steps; 0 for implicit steps)
+  double extrapolation_error = 0.0;
   // Wall time [s] by part: material update and residual assembly, tangent
   // assembly, factorisations, direction solves (GMRES or triangular).
   double seconds_residual = 0.0, seconds_tangent = 0.0,

@@ -507,6 +507,8 @@ bool ConcreteModel::accept(MaterialUpdateStats* implicit)
     // IMPL-EX: the implicit return map at the balanced strains updates the
     // state (and the stress coefficient: the reported stress is the
     // implicit one, on or inside the surfaces).
+    _sig_extrapolated.assign(_sig->x()->array().begin(),
+                             _sig->x()->array().end());
     const MaterialUpdateStats st = update_points(_trial_dt);
     if (implicit)
       *implicit = st;
@@ -584,6 +586,85 @@ void ConcreteModel::assemble_internal_force(Vec f, bool apply_bc) const
   if (apply_bc)
     dfem::petsc::set_bc(b, _fe.bcs(), nullptr);
   // Owned values into f (f may or may not be ghosted).
+  const double* src = nullptr;
+  double* dst = nullptr;
+  PetscInt n = 0;
+  VecGetLocalSize(f, &n);
+  VecGetArrayRead(b, &src);
+  VecGetArray(f, &dst);
+  std::copy_n(src, n, dst);
+  VecRestoreArray(f, &dst);
+  VecRestoreArrayRead(b, &src);
+}
+
+void ConcreteModel::assemble_extrapolation_change(Vec f) const
+{
+  Vec b = _f_work.vec(), b_local;
+  VecGhostGetLocalForm(b, &b_local);
+  VecSet(b_local, 0.0);
+  if (!_sig_extrapolated.empty())
+  {
+    // Per point sig(implicit) - sig(extrapolated); cells where it is below
+    // 1e-9 ft0 at every point (elastic points: round-off) are left out.
+    std::span<const double> sig = _sig->x()->array();
+    const int stride = 3 * _nq;
+    std::vector<std::int32_t> cells;
+    _coeff_work.clear();
+    for (std::int32_t c = 0; c < _num_owned_cells; ++c)
+    {
+      const double small = 1e-9 * _dynamic[_cell_material[c]]->derived().ft0;
+      bool differs = false;
+      for (int q = 0; q < _nq && !differs; ++q)
+      {
+        const std::int32_t d = _dof[static_cast<std::size_t>(c) * _nq + q];
+        for (int k = 0; k < 3; ++k)
+          differs |=
+              std::abs(sig[3 * d + k] - _sig_extrapolated[3 * d + k]) > small;
+      }
+      if (!differs)
+        continue;
+      cells.push_back(c);
+      for (int q = 0; q < _nq; ++q)
+      {
+        const std::int32_t d = _dof[static_cast<std::size_t>(c) * _nq + q];
+        for (int k = 0; k < 3; ++k)
+          _coeff_work.push_back(sig[3 * d + k] - _sig_extrapolated[3 * d + k]);
+      }
+    }
+    // The residual form's kernel on those cells, with that coefficient.
+    const auto ids = _L->integral_ids(dfem::IntegralType::cell);
+    if (ids.size() != 1 || _L->coefficient_offsets().back() != stride)
+      throw std::logic_error(
+          "residual form: one cell integral of sig expected");
+    const auto& kernel = _L->kernel(dfem::IntegralType::cell, ids.front());
+    const dfem::DofMap& dofmap = *_fe.V()->dofmap();
+    const int bs = dofmap.bs();
+    const auto& geometry = _fe.mesh()->geometry();
+    const auto& xdofs = geometry.dofmap();
+    std::span<const double> x = geometry.x();
+    std::vector<double> coordinate_dofs, be;
+    double* a = nullptr;
+    VecGetArray(b_local, &a);
+    for (std::size_t i = 0; i < cells.size(); ++i)
+    {
+      auto nodes = xdofs.links(cells[i]);
+      coordinate_dofs.resize(3 * nodes.size());
+      for (std::size_t j = 0; j < nodes.size(); ++j)
+        std::copy_n(&x[3 * nodes[j]], 3, &coordinate_dofs[3 * j]);
+      auto dofs = dofmap.cell_dofs(cells[i]);
+      be.assign(bs * dofs.size(), 0.0);
+      kernel(be.data(), &_coeff_work[i * stride], nullptr,
+             coordinate_dofs.data(), nullptr, nullptr);
+      for (std::size_t j = 0; j < dofs.size(); ++j)
+        for (int k = 0; k < bs; ++k)
+          a[bs * dofs[j] + k] += be[bs * j + k];
+    }
+    VecRestoreArray(b_local, &a);
+  }
+  VecGhostRestoreLocalForm(b, &b_local);
+  VecGhostUpdateBegin(b, ADD_VALUES, SCATTER_REVERSE);
+  VecGhostUpdateEnd(b, ADD_VALUES, SCATTER_REVERSE);
+  dfem::petsc::set_bc(b, _fe.bcs(), nullptr);
   const double* src = nullptr;
   double* dst = nullptr;
   PetscInt n = 0;

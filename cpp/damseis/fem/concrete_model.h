@@ -87,6 +87,12 @@ public:
   /// Internal force of the trial state into `f` (layout of V, zero at fixed
   /// dofs when `apply_bc`); ghost-consistent.
   void assemble_internal_force(Vec f, bool apply_bc = true) const;
+  /// After accept() of an extrapolated (IMPL-EX) trial: the change of the
+  /// internal force from the extrapolated to the implicit stresses,
+  /// int B^T (sig_implicit - sig_extrapolated), into `f` (layout of V, zero
+  /// at fixed dofs; assembled over the cells where the two differ). Zero if
+  /// no such trial was accepted yet. Collective.
+  void assemble_extrapolation_change(Vec f) const;
   /// Tangent of the trial state, fixed rows and columns identity; the
   /// pattern of ElasticModel::assemble_stiffness.
   Mat assemble_tangent() const;
@@ -207,6 +213,9 @@ private:
   // IMPL-EX: the plastic strain increment of the last accepted dynamic step
   // per point, and that step's length (0: none yet, no extrapolation).
   bool _implex = false;
+  /// The stress coefficient of the last extrapolated trial, kept by accept()
+  /// before the implicit return map replaces it.
+  std::vector<double> _sig_extrapolated;
   std::vector<std::array<double, 6>> _dep;
   double _dt_last = 0.0;
   /// Overwrites the stress coefficient with the extrapolated stress of every
