@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
+#include <random>
 #include <string>
 
 using namespace damseis::material;
@@ -179,4 +180,106 @@ TEST(MaterialPlaneStress, ReportsJumpQuickly)
   }
   else
     EXPECT_LT(n.return_maps, 41);
+}
+
+// Reference: the sigma_33 = 0 iteration around the 3D return map (the
+// same function with closed_form_tension = false). The closed-form return
+// to the tensile plane must give the same stresses (to 1e-6 ft0: the
+// iteration stops at |sigma_33| <= 1e-8 of the stresses), kappa_t (1e-6
+// relative) and eps_33 (to the iteration's tolerance), and the same
+// condensed plane-stress tangent
+// (1e-6 of its largest entry), wherever it applies; and it must apply to
+// most in-plane crack openings. Points: the Koyna concrete (0.7 m cells),
+// cracked along random in-plane directions to random depths of the
+// softening branch, then loaded by random tensile-dominated increments.
+TEST(MaterialPlaneStress, ClosedFormTensionMatchesTheIteration)
+{
+  for (Mode mode : {Mode::plastic, Mode::viscoplastic})
+  {
+    ConcreteParameters p = koyna(0.7);
+    p.mode = mode;
+    const HtcConcrete m(p);
+    const double dt = 0.01, E = m.derived().E, ft0 = m.derived().ft0;
+    std::mt19937 g(11);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    auto condensed = [](const Matrix6& T)
+    {
+      const int ip[3] = {0, 1, 3};
+      std::array<double, 9> c;
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b)
+          c[a * 3 + b] = T[ip[a] * 6 + ip[b]] -
+                         T[ip[a] * 6 + 2] * T[2 * 6 + ip[b]] / T[2 * 6 + 2];
+      return c;
+    };
+    int applied = 0, total = 0;
+    for (int k = 0; k < 3000; ++k)
+    {
+      // Crack: a few steps along a random in-plane direction.
+      const double th = 3.14159265358979 * u(g);
+      const double cx = std::cos(th), sy = std::sin(th);
+      const double depth = (1.0 + 4.0 * std::abs(u(g))) * ft0 / E;
+      State s;
+      const int n = 4;
+      for (int i = 0; i < n; ++i)
+      {
+        const double e = depth / n;
+        Vector6 de = {e * cx * cx,       e * sy * sy, 0.0,
+                      2.0 * e * cx * sy, 0.0,         0.0};
+        s = integrate_plane_stress(m, s, de, dt, nullptr, false).state;
+      }
+      // The increment: tension along a direction near the crack's, plus
+      // random in-plane parts.
+      const double a = 0.3 * u(g);
+      const double e = 0.3 * depth * (1.0 + u(g));
+      Vector6 de = {e * std::cos(th + a) * std::cos(th + a) + 0.2 * e * u(g),
+                    e * std::sin(th + a) * std::sin(th + a) + 0.2 * e * u(g),
+                    0.0,
+                    2.0 * e * std::cos(th + a) * std::sin(th + a) +
+                        0.2 * e * u(g),
+                    0.0,
+                    0.0};
+      Vector6 d_fast = de, d_ref = de;
+      PlaneStressCounts cf, cr;
+      const Update f = integrate_plane_stress(m, s, d_fast, dt, &cf, true);
+      const Update r = integrate_plane_stress(m, s, d_ref, dt, &cr, false);
+      ASSERT_TRUE(r.converged);
+      ASSERT_TRUE(f.converged);
+      if (r.active == 0)
+        continue; // elastic (fem::ConcreteModel's fast path takes these)
+      ++total;
+      if (cf.return_maps != 1 || cf.local_iterations != 0 ||
+          f.active != rankine_1)
+      {
+        continue; // the iteration did it (same code path as r)
+      }
+      ++applied;
+      EXPECT_EQ(r.active, unsigned(rankine_1)) << k;
+      for (int i = 0; i < 6; ++i)
+        EXPECT_NEAR(f.state.stress[i], r.state.stress[i], 1e-6 * ft0)
+            << "item " << k << " component " << i;
+      EXPECT_NEAR(f.state.kappa_t, r.state.kappa_t,
+                  1e-6 * std::abs(r.state.kappa_t));
+      EXPECT_EQ(f.state.kappa_c, r.state.kappa_c);
+      // eps_33 to the iteration's own tolerance: |sigma_33| <= 1e-8 (max
+      // |sigma| + ft0), i.e. that over lambda + 2G in eps_33 (x 2).
+      const double a1 = m.derived().lambda + 2.0 * m.derived().G;
+      EXPECT_NEAR(d_fast[2], d_ref[2],
+                  1e-6 * max_abs(de) +
+                      2e-8 * (max_abs(r.state.stress) + ft0) / a1);
+      const auto tf = condensed(f.tangent), tr = condensed(r.tangent);
+      double tmax = 0.0;
+      for (double v : tr)
+        tmax = std::max(tmax, std::abs(v));
+      for (int i = 0; i < 9; ++i)
+        EXPECT_NEAR(tf[i], tr[i], 1e-6 * tmax)
+            << "item " << k << " entry " << i;
+    }
+    std::printf("[   metric ] %s: %d of %d inelastic updates by the closed "
+                "form\n",
+                mode == Mode::plastic ? "plastic" : "viscoplastic", applied,
+                total);
+    EXPECT_GT(total, 1000);
+    EXPECT_GT(applied, total / 2);
+  }
 }

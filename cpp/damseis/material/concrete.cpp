@@ -195,6 +195,35 @@ Vector6 outer_vec(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
           0.5 * (a[1] * b[2] + a[2] * b[1]),
           0.5 * (a[0] * b[2] + a[2] * b[0])};
 }
+
+/// The elastic trial stress old + De de.
+Vector6 trial_stress(const Vector6& old, const Matrix6& De, const Vector6& de)
+{
+  Vector6 tr;
+  for (int i = 0; i < 6; ++i)
+  {
+    double s = old[i];
+    for (int j = 0; j < 6; ++j)
+      s += De[i * 6 + j] * de[j];
+    tr[i] = s;
+  }
+  return tr;
+}
+
+/// Adds the plastic strain of a return, D^-1 (trial - returned stress)
+/// (engineering shear), to ep.
+void add_plastic_strain(Vector6& ep, const Vector6& tr, const Vector6& s,
+                        double E, double nu, double G)
+{
+  Vector6 ds;
+  for (int a = 0; a < 6; ++a)
+    ds[a] = tr[a] - s[a];
+  const double tr_ds = ds[0] + ds[1] + ds[2];
+  for (int a = 0; a < 3; ++a)
+    ep[a] += ((1.0 + nu) * ds[a] - nu * tr_ds) / E;
+  for (int a = 3; a < 6; ++a)
+    ep[a] += ds[a] / G;
+}
 } // namespace
 
 std::string active_set_name(unsigned a)
@@ -909,11 +938,13 @@ bool HtcConcrete::solve_full(unsigned set, const std::array<double, 3>& str,
 }
 
 double HtcConcrete::rankine_1_multiplier(double s1, double ktn, double dt,
-                                         bool rates) const
+                                         bool rates, double modulus) const
 {
-  // sigma_1 = s1 - (lambda + 2G) mu = ft0 exp(-(ktn + sqrt(2/3) mu) / kt_u)
-  // R(sqrt(2/3) mu / dt): one root, as the softening modulus is below E.
-  const double a = d_.lambda + 2.0 * d_.G, c = c23 / d_.kappa_tu;
+  // sigma_1 = s1 - a mu = ft0 exp(-(ktn + sqrt(2/3) mu) / kt_u)
+  // R(sqrt(2/3) mu / dt), a = lambda + 2G (3D) or E / (1 - nu^2) (plane
+  // stress): one root, as the softening modulus is below E.
+  const double a = modulus > 0.0 ? modulus : d_.lambda + 2.0 * d_.G,
+               c = c23 / d_.kappa_tu;
   const double q = rates ? c23 / (dt * d_.rate_t.kdot0) : 0.0;
   const double dl = d_.rate_t.delta, e0 = d_.ft0 * std::exp(-ktn / d_.kappa_tu);
   double lo = 0.0, hi = std::max(s1, 0.0) / a;
@@ -1444,14 +1475,7 @@ Update HtcConcrete::integrate_step(const State& old, const Vector6& de,
   Update u;
   u.state = old;
   const Matrix6 De = elastic_tangent();
-  Vector6 tr;
-  for (int i = 0; i < 6; ++i)
-  {
-    double s = old.stress[i];
-    for (int j = 0; j < 6; ++j)
-      s += De[i * 6 + j] * de[j];
-    tr[i] = s;
-  }
+  const Vector6 tr = trial_stress(old.stress, De, de);
   u.state.stress = tr;
   u.state.kappa_c_rate = u.state.kappa_t_rate = 0.0;
   u.tangent = De;
@@ -1660,20 +1684,24 @@ Update HtcConcrete::integrate_step(const State& old, const Vector6& de,
   ns.kappa_t = x[4];
   ns.kappa_c_rate = dt > 0 ? (x[3] - old.kappa_c) / dt : 0.0;
   ns.kappa_t_rate = dt > 0 ? (x[4] - old.kappa_t) / dt : 0.0;
-  {
-    Vector6 ds;
-    for (int a = 0; a < 6; ++a)
-      ds[a] = tr[a] - ns.stress[a];
-    const double tr_ds = ds[0] + ds[1] + ds[2];
-    for (int a = 0; a < 3; ++a)
-      ns.plastic_strain[a] += ((1.0 + d_.nu) * ds[a] - d_.nu * tr_ds) / d_.E;
-    for (int a = 3; a < 6; ++a)
-      ns.plastic_strain[a] += ds[a] / d_.G;
-  }
+  add_plastic_strain(ns.plastic_strain, tr, ns.stress, d_.E, d_.nu, d_.G);
 
   // Consistent tangent: d(sigma)/d(sigma_tr) of the coaxial return (the
-  // principal part from the converged Jacobian, spin terms from the
-  // eigenvalue differences; de Souza Neto et al. 2008, App. A), times D.
+  // principal part from the converged Jacobian), times D.
+  std::array<std::array<double, 3>, 3> dir;
+  for (int i = 0; i < 3; ++i)
+    dir[i] = {nv[i][0], nv[i][1], nv[i][2]};
+  u.tangent = coaxial_tangent(C, str, x.data(), dir);
+  return u;
+}
+
+Matrix6 HtcConcrete::coaxial_tangent(
+    const std::array<double, 9>& C, const std::array<double, 3>& str,
+    const double* x, const std::array<std::array<double, 3>, 3>& dir) const
+{
+  Eigen::Vector3d nv[3];
+  for (int i = 0; i < 3; ++i)
+    nv[i] = {dir[i][0], dir[i][1], dir[i][2]};
   Matrix6 T{};
   double CD[3][3];
   for (int i = 0; i < 3; ++i)
@@ -1692,6 +1720,8 @@ Update HtcConcrete::integrate_step(const State& old, const Vector6& de,
       for (int a = 0; a < 6; ++a)
         for (int b = 0; b < 6; ++b)
           T[a * 6 + b] += CD[i][j] * Ev[i][a] * Ev[j][b];
+  // Spin terms from the eigenvalue differences (de Souza Neto et al. 2008,
+  // App. A).
   const int pairs[3][2] = {{0, 1}, {1, 2}, {0, 2}};
   for (const auto& pr : pairs)
   {
@@ -1708,8 +1738,104 @@ Update HtcConcrete::integrate_step(const State& old, const Vector6& de,
       for (int b = 0; b < 6; ++b)
         T[a * 6 + b] += f * Mv[a] * Mv[b];
   }
-  u.tangent = T;
-  return u;
+  return T;
+}
+
+bool HtcConcrete::plane_stress_tension(const State& old, Vector6& de, double dt,
+                                       Update& u) const
+{
+  if (p_.mode == Mode::elastic || old.stress[4] != 0.0 ||
+      old.stress[5] != 0.0 || de[4] != 0.0 || de[5] != 0.0)
+  {
+    return false;
+  }
+  if (rate_on_ && (!(dt > 0.0) || !log_t_))
+    return false;
+  const double E = d_.E, nu = d_.nu, lam = d_.lambda, G = d_.G;
+  // In-plane trial with sigma_33 = 0 throughout (plane-stress elasticity).
+  const double Ep = E / (1.0 - nu * nu);
+  const double sx = old.stress[0] + Ep * (de[0] + nu * de[1]);
+  const double sy = old.stress[1] + Ep * (nu * de[0] + de[1]);
+  const double txy = old.stress[3] + G * de[3];
+  const double c = 0.5 * (sx + sy), h = 0.5 * (sx - sy);
+  const double r = std::hypot(h, txy);
+  const double s1 = c + r, s2 = c - r;
+  const double kt0 = old.kappa_t, kc0 = old.kappa_c;
+  // The plane sigma_1 <= ft must be violated at the old strength (the
+  // elastic-trial test decides elasticity; here only the set).
+  const double ft_old = tensile_strength(kt0, 0.0);
+  const double tol = p_.tolerance * d_.fc0;
+  if (!(s1 - ft_old > tol) || s1 <= 0.0)
+    return false;
+  const double mu = rankine_1_multiplier(s1, kt0, dt, rate_on_, Ep);
+  if (!(mu > 0.0) || !std::isfinite(mu))
+    return false;
+  const double kt = kt0 + c23 * mu;
+  const double ktd = dt > 0.0 ? (kt - kt0) / dt : 0.0;
+  const double ft = tensile_strength(kt, rate_on_ ? ktd : 0.0);
+  const double x1 = s1 - Ep * mu, x2 = s2 - nu * Ep * mu;
+  // The consistency equation's residual (rankine_1_multiplier converges to
+  // 1e-14 fc0) and the other surfaces at the result, as integrate_step's
+  // Kuhn-Tucker check (tol_viol).
+  if (std::abs(x1 - ft) > tol)
+    return false;
+  std::array<double, 3> xs = {x1, std::max(x2, 0.0), std::min(x2, 0.0)};
+  std::array<double, 5> ph;
+  surfaces<double>(xs, kc0, kt, 0.0, rate_on_ ? ktd : 0.0, ph, nullptr);
+  const double tol_viol = 1e-8 * d_.fc0;
+  if (ph[0] > tol_viol || ph[1] > tol_viol || x2 > ft + tol_viol)
+    return false;
+
+  // Tangent of the 3D return at this eps_33: the trial principal stresses
+  // (sigma_1, sigma_2, sigma_33) + mu D n1 n1, of which only the first
+  // moves mu: d mu / d str_1 = 1 / (lambda + 2G + dft/dmu).
+  const double a1 = lam + 2.0 * G;
+  const std::array<double, 3> str = {x1 + a1 * mu, x2 + lam * mu, lam * mu};
+  const double dft =
+      ft *
+      (-c23 / d_.kappa_tu +
+       (rate_on_ ? d_.rate_t.delta * c23 / (dt * d_.rate_t.kdot0 + c23 * mu)
+                 : 0.0));
+  const double den = a1 + dft;
+  if (!(den > 0.0))
+    return false;
+  // Direction of sigma_1 in the plane (as principal_axes), eps_33 and the
+  // 3D trial at it: the stresses of the 3D return to the same plane.
+  double nx = 1.0, ny = 0.0;
+  if (r > 0.0)
+  {
+    nx = h >= 0.0 ? h + r : txy;
+    ny = h >= 0.0 ? txy : r - h;
+    const double n = std::hypot(nx, ny);
+    nx /= n;
+    ny /= n;
+  }
+  // sigma_33 = lambda (tr de - mu) + 2G de_33 + sigma_33,old = 0 (the flow
+  // n1 n1 has no 33 part and trace 1).
+  de[2] = -(lam * (de[0] + de[1] - mu) + old.stress[2]) / (lam + 2.0 * G);
+  const Vector6 tr = trial_stress(old.stress, elastic_tangent(), de);
+  u = Update{};
+  State& ns = u.state;
+  ns = old;
+  const double c2 = nx * nx, s2n = ny * ny, cs = nx * ny;
+  ns.stress = {
+      x1 * c2 + x2 * s2n, x1 * s2n + x2 * c2, 0.0, (x1 - x2) * cs, 0.0, 0.0};
+  ns.kappa_t = kt;
+  ns.kappa_c = kc0;
+  ns.kappa_t_rate = ktd;
+  ns.kappa_c_rate = 0.0;
+  add_plastic_strain(ns.plastic_strain, tr, ns.stress, E, nu, G);
+  const std::array<double, 3> x3 = {x1, x2, 0.0};
+  std::array<double, 9> C = {1.0 - a1 / den, 0.0, 0.0, -lam / den, 1.0, 0.0,
+                             -lam / den,     0.0, 1.0};
+  const std::array<std::array<double, 3>, 3> dir = {
+      {{nx, ny, 0.0}, {-ny, nx, 0.0}, {0.0, 0.0, 1.0}}};
+  u.tangent = coaxial_tangent(C, str, x3.data(), dir);
+  u.active = rankine_1;
+  u.iterations = 0;
+  u.passes = 1;
+  u.converged = true;
+  return true;
 }
 
 bool HtcConcrete::admissible(const Vector6& stress, double kappa_c,

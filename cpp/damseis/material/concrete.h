@@ -172,6 +172,18 @@ public:
   double admissible_radius(const Vector6& stress, double kappa_c,
                            double kappa_t) const;
 
+  /// Plane stress (sigma_33 = 0, no 23/13 shear), in closed form, for the
+  /// return to the tensile plane sigma_1 <= ft alone (a crack opening in
+  /// the plane): the multiplier from the scalar consistency equation with
+  /// the plane-stress modulus E / (1 - nu^2). Applies only where that set
+  /// is the answer: sigma_1 of the plane-stress trial above ft, the result
+  /// on no other surface (sigma_2 <= ft and the HTC within tolerance), and
+  /// a power or no rate law; then true, with u as integrate() at the
+  /// eps_33 that makes sigma_33 = 0 (d_strain[2] holds it) and the 3D
+  /// tangent there. Otherwise false and nothing written.
+  bool plane_stress_tension(const State& old, Vector6& d_strain, double dt,
+                            Update& u) const;
+
   /// The five yield functions (stress units) and, if n != nullptr, their
   /// gradients in principal space; s: principal stresses (descending).
   template <class T>
@@ -200,8 +212,19 @@ private:
   /// The multiplier of the return to the Rankine plane sigma_1 <= ft alone,
   /// by a safeguarded scalar Newton iteration (rates: power-law R of the
   /// kappa_t rate): the start of the reduced iteration of that set.
-  double rankine_1_multiplier(double s1, double ktn, double dt,
-                              bool rates) const;
+  /// modulus: the stiffness along sigma_1 (0: lambda + 2G, the 3D return;
+  /// E / (1 - nu^2) in plane stress).
+  double rankine_1_multiplier(double s1, double ktn, double dt, bool rates,
+                              double modulus = 0.0) const;
+  /// The consistent tangent of a coaxial return: dsig_dtr = d(sigma)/
+  /// d(trial sigma) in principal space (row-major 3x3), str the trial and x
+  /// the returned principal stresses, dir the principal directions; spin
+  /// terms from the eigenvalue differences (de Souza Neto et al. 2008,
+  /// App. A), times D.
+  Matrix6
+  coaxial_tangent(const std::array<double, 9>& dsig_dtr,
+                  const std::array<double, 3>& str, const double* x,
+                  const std::array<std::array<double, 3>, 3>& dir) const;
   /// The full system (principal stresses, kappas, multipliers; exact
   /// Jacobian by AD): the second-line solver of a set.
   template <int M>

@@ -8,10 +8,17 @@ namespace damseis::material
 
 Update integrate_plane_stress(const HtcConcrete& m, const State& old,
                               Vector6& d_strain, double dt,
-                              PlaneStressCounts* counts)
+                              PlaneStressCounts* counts,
+                              bool closed_form_tension)
 {
   PlaneStressCounts n;
   Update up;
+  if (closed_form_tension && m.plane_stress_tension(old, d_strain, dt, up))
+  {
+    if (counts)
+      *counts = {1, 0};
+    return up;
+  }
   // sigma_33(eps_33) is not monotone where the point softens (crushing
   // with dilatancy: measured slopes down to -3e-4 E on Koyna), and it jumps
   // where the return map switches between roots of the local problem (e.g.

@@ -23,8 +23,12 @@ struct PlaneStressCounts
 /// and holds the solved value on return. The update is not converged if the
 /// return map fails, or if sigma_33 = 0 has no solution near the iterates
 /// (the return map jumps across zero; see plane_stress.cpp).
+/// closed_form_tension: try HtcConcrete::plane_stress_tension first (one
+/// closed-form return instead of the iteration, where a crack opens in the
+/// plane); false: always the iteration (the reference of its test).
 Update integrate_plane_stress(const HtcConcrete& m, const State& old,
                               Vector6& d_strain, double dt,
-                              PlaneStressCounts* counts = nullptr);
+                              PlaneStressCounts* counts = nullptr,
+                              bool closed_form_tension = true);
 
 } // namespace damseis::material
