@@ -581,6 +581,12 @@ void ConcreteModel::assemble_internal_force(Vec f, bool apply_bc) const
   VecSet(b_local, 0.0);
   VecGhostRestoreLocalForm(b, &b_local);
   dfem::petsc::assemble_vector(b, *_L);
+  finish_work_vector(f, apply_bc);
+}
+
+void ConcreteModel::finish_work_vector(Vec f, bool apply_bc) const
+{
+  Vec b = _f_work.vec();
   VecGhostUpdateBegin(b, ADD_VALUES, SCATTER_REVERSE);
   VecGhostUpdateEnd(b, ADD_VALUES, SCATTER_REVERSE);
   if (apply_bc)
@@ -662,18 +668,7 @@ void ConcreteModel::assemble_extrapolation_change(Vec f) const
     VecRestoreArray(b_local, &a);
   }
   VecGhostRestoreLocalForm(b, &b_local);
-  VecGhostUpdateBegin(b, ADD_VALUES, SCATTER_REVERSE);
-  VecGhostUpdateEnd(b, ADD_VALUES, SCATTER_REVERSE);
-  dfem::petsc::set_bc(b, _fe.bcs(), nullptr);
-  const double* src = nullptr;
-  double* dst = nullptr;
-  PetscInt n = 0;
-  VecGetLocalSize(f, &n);
-  VecGetArrayRead(b, &src);
-  VecGetArray(f, &dst);
-  std::copy_n(src, n, dst);
-  VecRestoreArray(f, &dst);
-  VecRestoreArrayRead(b, &src);
+  finish_work_vector(f, true);
 }
 
 Mat ConcreteModel::assemble_tangent() const

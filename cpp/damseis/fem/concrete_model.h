@@ -192,6 +192,9 @@ private:
   std::vector<std::int32_t> _cells; ///< all local cells (owned, ghost)
   /// Ghosted work vector of the internal force assembly.
   dolfinx::la::petsc::Vector _f_work{nullptr, false};
+  /// Adds the ghost contributions of _f_work to their owners, zeroes the
+  /// fixed dofs if apply_bc, and copies the owned values into f.
+  void finish_work_vector(Vec f, bool apply_bc) const;
   std::shared_ptr<dolfinx::fem::Form<double>> _L, _a;
   std::unique_ptr<dolfinx::fem::Expression<double>> _strain;
   std::vector<std::unique_ptr<material::HtcConcrete>> _dynamic, _static;
