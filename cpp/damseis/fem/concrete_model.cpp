@@ -643,6 +643,9 @@ void ConcreteModel::assemble_extrapolation_change(Vec f) const
       throw std::logic_error(
           "residual form: one cell integral of sig expected");
     const auto& kernel = _L->kernel(dfem::IntegralType::cell, ids.front());
+    if (_fe.V()->element()->needs_dof_transformations())
+      throw std::logic_error("extrapolation change: element needs dof "
+                             "transformations");
     const dfem::DofMap& dofmap = *_fe.V()->dofmap();
     const int bs = dofmap.bs();
     const auto& geometry = _fe.mesh()->geometry();
