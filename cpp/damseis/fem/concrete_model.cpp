@@ -7,6 +7,7 @@
 #include <damseis/material/plane_stress.h>
 #include <dolfinx/common/IndexMap.h>
 #include <dolfinx/fem/assemble_matrix_impl.h>
+#include <dolfinx/fem/assemble_vector_impl.h>
 #include <dolfinx/fem/assembler.h>
 #include <dolfinx/fem/petsc.h>
 #include <dolfinx/fem/utils.h>
@@ -642,32 +643,23 @@ void ConcreteModel::assemble_extrapolation_change(Vec f) const
     if (ids.size() != 1 || _L->coefficient_offsets().back() != stride)
       throw std::logic_error(
           "residual form: one cell integral of sig expected");
-    const auto& kernel = _L->kernel(dfem::IntegralType::cell, ids.front());
-    if (_fe.V()->element()->needs_dof_transformations())
+    const dfem::FunctionSpace& V = *_fe.V();
+    const auto& element = *V.element();
+    // (No cell permutation data is passed: Lagrange elements need none.)
+    if (element.needs_dof_transformations())
       throw std::logic_error("extrapolation change: element needs dof "
                              "transformations");
-    const dfem::DofMap& dofmap = *_fe.V()->dofmap();
-    const int bs = dofmap.bs();
-    const auto& geometry = _fe.mesh()->geometry();
-    const auto& xdofs = geometry.dofmap();
-    std::span<const double> x = geometry.x();
-    std::vector<double> coordinate_dofs, be;
+    PetscInt n = 0;
+    VecGetLocalSize(b_local, &n);
     double* a = nullptr;
     VecGetArray(b_local, &a);
-    for (std::size_t i = 0; i < cells.size(); ++i)
-    {
-      auto nodes = xdofs.links(cells[i]);
-      coordinate_dofs.resize(3 * nodes.size());
-      for (std::size_t j = 0; j < nodes.size(); ++j)
-        std::copy_n(&x[3 * nodes[j]], 3, &coordinate_dofs[3 * j]);
-      auto dofs = dofmap.cell_dofs(cells[i]);
-      be.assign(bs * dofs.size(), 0.0);
-      kernel(be.data(), &_coeff_work[i * stride], nullptr,
-             coordinate_dofs.data(), nullptr, nullptr);
-      for (std::size_t j = 0; j < dofs.size(); ++j)
-        for (int k = 0; k < bs; ++k)
-          a[bs * dofs[j] + k] += be[bs * j + k];
-    }
+    dfem::impl::assemble_cells<double>(
+        element.get_dof_transformation_function<double>(),
+        std::span<double>(a, n), _fe.mesh()->geometry(),
+        std::span<const std::int32_t>(cells), V.dofmap()->list(),
+        V.dofmap()->bs(), _L->kernel(dfem::IntegralType::cell, ids.front()),
+        std::span<const double>(), std::span<const double>(_coeff_work), stride,
+        std::span<const std::uint32_t>());
     VecRestoreArray(b_local, &a);
   }
   VecGhostRestoreLocalForm(b, &b_local);
