@@ -248,9 +248,8 @@ bool ConcreteModel::elastic_point(
     if (std::abs(tr[2]) > 1e-8 * (smax + m.derived().ft0))
       return false;
   }
-  const bool inside = ball.material == &m && ball.kappa_c == old.kappa_c &&
-                      ball.kappa_t == old.kappa_t &&
-                      tensor_distance2(tr, ball.centre) <= ball.r2;
+  const bool inside =
+      ball.fits(m, old) && tensor_distance2(tr, ball.centre) <= ball.r2;
   if (!inside && !m.admissible(tr, old.kappa_c, old.kappa_t))
     return false;
   out = old;
@@ -560,9 +559,7 @@ bool ConcreteModel::accept(MaterialUpdateStats* implicit)
       const std::size_t p = static_cast<std::size_t>(c) * _nq + q;
       const material::State& s = _state[p];
       ElasticBall& b = _ball[p];
-      if (b.material == &m && b.kappa_c == s.kappa_c &&
-          b.kappa_t == s.kappa_t &&
-          tensor_distance2(s.stress, b.centre) <= 0.25 * b.r2)
+      if (b.fits(m, s) && tensor_distance2(s.stress, b.centre) <= 0.25 * b.r2)
       {
         continue;
       }

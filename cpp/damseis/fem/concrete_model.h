@@ -154,6 +154,12 @@ private:
     double r2 = -1.0; ///< squared radius (< 0: none)
     double kappa_c = 0.0, kappa_t = 0.0;
     const material::HtcConcrete* material = nullptr;
+    /// True if the ball was made for this material object and the internal
+    /// variables of `s`.
+    bool fits(const material::HtcConcrete& m, const material::State& s) const
+    {
+      return material == &m && kappa_c == s.kappa_c && kappa_t == s.kappa_t;
+    }
   };
   /// The material object of local cell c for a step of length dt (> 0:
   /// dynamic; 0: the static stage).
