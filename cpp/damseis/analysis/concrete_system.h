@@ -68,6 +68,12 @@ public:
   /// (core-seconds), all trials
   std::int64_t returned_points = 0;
   double return_map_seconds = 0.0;
+  /// Zeroes the counts summed over trials (above).
+  void reset_counts()
+  {
+    substepped = return_maps = local_iterations = returned_points = 0;
+    return_map_seconds = 0.0;
+  }
 
 private:
   void count(const fem::MaterialUpdateStats& s)

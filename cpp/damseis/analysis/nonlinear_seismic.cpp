@@ -384,9 +384,7 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   StopSignals signals;
   results::Progress progress(comm, n - k0);
   // count the time history only
-  system.substepped = system.return_maps = system.local_iterations = 0;
-  system.returned_points = 0;
-  system.return_map_seconds = 0.0;
+  system.reset_counts();
   const auto loop_start = Clock::now();
   for (int k = k0 + 1; k <= n; ++k)
   {
@@ -422,9 +420,7 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
       stats[16] = rep.extrapolation_error;
       stats[17] = k * dt;
     }
-    system.substepped = system.return_maps = system.local_iterations = 0;
-    system.returned_points = 0;
-    system.return_map_seconds = 0.0;
+    system.reset_counts();
     record_state(k, k * dt);
     progress.report(
         k - k0, k * dt,
