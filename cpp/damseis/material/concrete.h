@@ -186,6 +186,10 @@ public:
 
   /// The five yield functions (stress units) and, if n != nullptr, their
   /// gradients in principal space; s: principal stresses (descending).
+  /// HTC coefficients of the strengths ft, fc (ifc = 1 / fc): the ratio
+  /// (1 + htc_tension_offset) ft / fc clamped to [rho_min, rho_max].
+  template <class T>
+  std::array<T, 4> htc_of(const T& ft, const T& fc, const T& ifc) const;
   template <class T>
   void surfaces(const std::array<T, 3>& s, const T& kc, const T& kt,
                 const T& kcd, const T& ktd, std::array<T, 5>& phi,
@@ -213,9 +217,12 @@ private:
   /// by a safeguarded scalar Newton iteration (rates: power-law R of the
   /// kappa_t rate): the start of the reduced iteration of that set.
   /// modulus: the stiffness along sigma_1 (0: lambda + 2G, the 3D return;
-  /// E / (1 - nu^2) in plane stress).
+  /// E / (1 - nu^2) in plane stress). guess >= 0: the first iterate (the
+  /// old rate's increment), else the rate-independent frozen-strength one.
+  /// ft_out: the tensile strength at the returned multiplier.
   double rankine_1_multiplier(double s1, double ktn, double dt, bool rates,
-                              double modulus = 0.0) const;
+                              double modulus = 0.0, double guess = -1.0,
+                              double* ft_out = nullptr) const;
   /// The consistent tangent of a coaxial return: dsig_dtr = d(sigma)/
   /// d(trial sigma) in principal space (row-major 3x3), str the trial and x
   /// the returned principal stresses, dir the principal directions; spin
