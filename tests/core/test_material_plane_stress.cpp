@@ -27,7 +27,7 @@ ConcreteParameters koyna(double h)
   p.Gc = 20e3;
   p.mode = Mode::viscoplastic;
   p.element_size = h;
-  p.max_substeps = 4; // as fem::ConcreteModel sets
+  p.max_substeps = 1; // as fem::ConcreteModel uses (no sub-stepping)
   return p;
 }
 

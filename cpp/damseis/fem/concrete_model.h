@@ -22,7 +22,9 @@ struct MaterialUpdateStats
   std::int64_t inelastic = 0; ///< points with an active return map
   std::int64_t failed = 0;    ///< points whose local Newton did not converge
   /// points that needed the sub-stepping fall-back (each costs up to 55
-  /// single-step return maps: the composite tangent by central differences)
+  /// single-step return maps: the composite tangent by central differences;
+  /// 0 unless a material's max_substeps > 1, which ConcreteModel no longer
+  /// sets)
   std::int64_t substepped = 0;
   /// single-step return maps (integrate() calls; plane stress: one per
   /// iteration on sigma_zz = 0) and their local Newton iterations, at the
