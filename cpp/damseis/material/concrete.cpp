@@ -1521,6 +1521,23 @@ Update HtcConcrete::integrate_step(const State& old, const Vector6& de,
   std::array<std::array<double, 3>, 5> ng;
   surfaces<double>(str, old.kappa_c, old.kappa_t, 0.0, 0.0, phi, &ng);
   const unsigned set0 = predict_set(str, old.kappa_c, old.kappa_t, phi, ng);
+  if (set0 == rankine_1)
+  {
+    // A crack opening: the return to the Rankine plane alone in closed form
+    // where it is the answer (solve_set's start for this set, which its
+    // Newton iteration confirms without an iteration).
+    std::array<std::array<double, 3>, 3> dir;
+    for (int i = 0; i < 3; ++i)
+      dir[i] = {nv[i][0], nv[i][1], nv[i][2]};
+    u.passes = 1;
+    if (rankine_1_closed_form(old, tr, str, dir, dt, u))
+      return u;
+    u.passes = 0;
+    u.state = old;
+    u.state.stress = tr;
+    u.state.kappa_c_rate = u.state.kappa_t_rate = 0.0;
+    u.tangent = De;
+  }
   unsigned set = set0;
 
   std::array<double, 9> x{}, C{};
@@ -1778,6 +1795,83 @@ Matrix6 HtcConcrete::coaxial_tangent(
   return T;
 }
 
+bool HtcConcrete::rankine_1_tangent(
+    double ft, double mu, double dt, const std::array<double, 3>& str,
+    const double* x, const std::array<std::array<double, 3>, 3>& dir,
+    Matrix6& T) const
+{
+  // sigma = str - mu D n1 with mu of the scalar consistency equation, which
+  // only sigma_1's trial moves: d mu / d str_1 = 1 / (lambda + 2G +
+  // dft/dmu).
+  const double a1 = d_.lambda + 2.0 * d_.G, lam = d_.lambda;
+  const double dft =
+      ft *
+      (-c23 / d_.kappa_tu +
+       (rate_on_ ? d_.rate_t.delta * c23 / (dt * d_.rate_t.kdot0 + c23 * mu)
+                 : 0.0));
+  const double den = a1 + dft;
+  if (!(den > 0.0))
+    return false;
+  const std::array<double, 9> C = {
+      1.0 - a1 / den, 0.0, 0.0, -lam / den, 1.0, 0.0, -lam / den, 0.0, 1.0};
+  T = coaxial_tangent(C, str, x, dir);
+  return true;
+}
+
+bool HtcConcrete::rankine_1_closed_form(
+    const State& old, const Vector6& tr, const std::array<double, 3>& str,
+    const std::array<std::array<double, 3>, 3>& dir, double dt, Update& u) const
+{
+  if (!p_.closed_form_tension || (rate_on_ && (!(dt > 0.0) || !log_t_)))
+    return false;
+  const double lam = d_.lambda, a1 = lam + 2.0 * d_.G;
+  const double kt0 = old.kappa_t, kc0 = old.kappa_c;
+  // First iterate: the old rate's multiplier (as plane_stress_tension).
+  const double guess =
+      dt > 0.0 && old.kappa_t_rate > 0.0 ? old.kappa_t_rate * dt / c23 : -1.0;
+  double ft = 0.0;
+  const double mu =
+      rankine_1_multiplier(str[0], kt0, dt, rate_on_, 0.0, guess, &ft);
+  if (!(mu > 0.0) || !std::isfinite(mu))
+    return false;
+  const std::array<double, 3> x = {str[0] - a1 * mu, str[1] - lam * mu,
+                                   str[2] - lam * mu};
+  // The Kuhn-Tucker check of integrate_step (converged to tol, the other
+  // surfaces within tol_viol at kappa_c = kc0 with zero rate and kappa_t
+  // at its rate, whose strength is ft).
+  const double tol = p_.tolerance * d_.fc0, tol_viol = 1e-8 * d_.fc0;
+  if (std::abs(x[0] - ft) > tol || x[1] > x[0])
+    return false;
+  std::array<double, 5> ph;
+  const double fc = d_.fc0 * hc(kc0), ifc = 1.0 / fc;
+  surfaces_at<double>(x, ft, ifc, htc_of(ft, fc, ifc), ph, nullptr);
+  if (ph[0] > tol_viol || ph[1] > tol_viol || ph[3] > tol_viol ||
+      ph[4] > tol_viol)
+  {
+    return false;
+  }
+  u.state = old;
+  State& ns = u.state;
+  ns.stress = {0, 0, 0, 0, 0, 0};
+  for (int i = 0; i < 3; ++i)
+  {
+    const Eigen::Vector3d n(dir[i][0], dir[i][1], dir[i][2]);
+    const Vector6 E = outer_vec(n, n);
+    for (int a = 0; a < 6; ++a)
+      ns.stress[a] += x[i] * E[a];
+  }
+  ns.kappa_t = kt0 + c23 * mu;
+  ns.kappa_t_rate = dt > 0.0 ? (ns.kappa_t - kt0) / dt : 0.0;
+  ns.kappa_c_rate = 0.0;
+  add_plastic_strain(ns.plastic_strain, tr, ns.stress, d_.E, d_.nu, d_.G);
+  if (!rankine_1_tangent(ft, mu, dt, str, x.data(), dir, u.tangent))
+    return false;
+  u.active = rankine_1;
+  u.iterations = 0;
+  u.converged = true;
+  return true;
+}
+
 bool HtcConcrete::plane_stress_tension(const State& old, Vector6& de, double dt,
                                        Update& u) const
 {
@@ -1831,19 +1925,10 @@ bool HtcConcrete::plane_stress_tension(const State& old, Vector6& de, double dt,
   if (ph[0] > tol_viol || ph[1] > tol_viol || x2 > ft + tol_viol)
     return false;
 
-  // Tangent of the 3D return at this eps_33: the trial principal stresses
-  // (sigma_1, sigma_2, sigma_33) + mu D n1 n1, of which only the first
-  // moves mu: d mu / d str_1 = 1 / (lambda + 2G + dft/dmu).
+  // Tangent of the 3D return at this eps_33 (rankine_1_tangent): the trial
+  // principal stresses (sigma_1, sigma_2, sigma_33) + mu D n1 n1.
   const double a1 = lam + 2.0 * G;
   const std::array<double, 3> str = {x1 + a1 * mu, x2 + lam * mu, lam * mu};
-  const double dft =
-      ft *
-      (-c23 / d_.kappa_tu +
-       (rate_on_ ? d_.rate_t.delta * c23 / (dt * d_.rate_t.kdot0 + c23 * mu)
-                 : 0.0));
-  const double den = a1 + dft;
-  if (!(den > 0.0))
-    return false;
   // Direction of sigma_1 in the plane (as principal_axes), eps_33 and the
   // 3D trial at it: the stresses of the 3D return to the same plane.
   double nx = 1.0, ny = 0.0;
@@ -1871,11 +1956,10 @@ bool HtcConcrete::plane_stress_tension(const State& old, Vector6& de, double dt,
   ns.kappa_c_rate = 0.0;
   add_plastic_strain(ns.plastic_strain, tr, ns.stress, E, nu, G);
   const std::array<double, 3> x3 = {x1, x2, 0.0};
-  std::array<double, 9> C = {1.0 - a1 / den, 0.0, 0.0, -lam / den, 1.0, 0.0,
-                             -lam / den,     0.0, 1.0};
   const std::array<std::array<double, 3>, 3> dir = {
       {{nx, ny, 0.0}, {-ny, nx, 0.0}, {0.0, 0.0, 1.0}}};
-  u.tangent = coaxial_tangent(C, str, x3.data(), dir);
+  if (!rankine_1_tangent(ft, mu, dt, str, x3.data(), dir, u.tangent))
+    return false;
   u.active = rankine_1;
   u.iterations = 0;
   u.passes = 1;

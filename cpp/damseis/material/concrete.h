@@ -70,6 +70,10 @@ struct ConcreteParameters
   /// Local Newton: scaled residual tolerance and iteration limit.
   double tolerance = 1e-10;
   int max_iterations = 60;
+  /// Crack openings (the Rankine plane sigma_1 <= ft alone) by the closed
+  /// form of the scalar consistency equation where it is the answer
+  /// (false: always the general active-set iteration; for tests).
+  bool closed_form_tension = true;
   /// > 1: a step that does not converge is retried with 2, 4, ... up to
   /// max_substeps equal sub-steps (composite tangent by central
   /// differences). Off by default: the callers (path driver, FE solver) cut
@@ -213,6 +217,20 @@ private:
                  const std::array<double, 9>& warm, std::array<double, 9>& x,
                  std::array<double, 9>& dsig_dtr, int& iterations,
                  bool probe_edge, bool& edge_left) const;
+  /// The return to the Rankine plane alone in 3D (str: trial principal
+  /// stresses, descending, dir their directions; tr the trial stress), if
+  /// that set is the answer; else false and u partly written.
+  bool rankine_1_closed_form(const State& old, const Vector6& tr,
+                             const std::array<double, 3>& str,
+                             const std::array<std::array<double, 3>, 3>& dir,
+                             double dt, Update& u) const;
+  /// The consistent tangent of a return to the Rankine plane alone (x the
+  /// returned principal stresses, ft the strength at multiplier mu); false
+  /// where d(ft - sigma_1)/d mu is not positive.
+  bool rankine_1_tangent(double ft, double mu, double dt,
+                         const std::array<double, 3>& str, const double* x,
+                         const std::array<std::array<double, 3>, 3>& dir,
+                         Matrix6& T) const;
   /// The multiplier of the return to the Rankine plane sigma_1 <= ft alone,
   /// by a safeguarded scalar Newton iteration (rates: power-law R of the
   /// kappa_t rate): the start of the reduced iteration of that set.
