@@ -5,7 +5,9 @@
 
 #include "damseis/material/concrete.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <gtest/gtest.h>
 
 namespace damseis::material::test_support
@@ -25,5 +27,28 @@ inline void expect_same_crack_opening(const Update& f, const Update& r,
               kappa_rel * std::abs(r.state.kappa_t))
       << "item " << item;
   EXPECT_EQ(f.state.kappa_c, r.state.kappa_c) << "item " << item;
+}
+
+/// Every entry of the tangent f within rel x the largest entry of r.
+template <class Array>
+void expect_same_tangent(const Array& f, const Array& r, double rel, int item)
+{
+  double tmax = 0.0;
+  for (double v : r)
+    tmax = std::max(tmax, std::abs(v));
+  for (std::size_t i = 0; i < r.size(); ++i)
+    EXPECT_NEAR(f[i], r[i], rel * tmax) << "item " << item << " entry " << i;
+}
+
+/// Prints how many of the inelastic updates took the closed form, and
+/// checks there were enough of both.
+inline void expect_closed_form_share(Mode mode, int applied, int total)
+{
+  std::printf("[   metric ] %s: %d of %d inelastic updates by the closed "
+              "form\n",
+              mode == Mode::plastic ? "plastic" : "viscoplastic", applied,
+              total);
+  EXPECT_GT(total, 1000);
+  EXPECT_GT(applied, total / 2);
 }
 } // namespace damseis::material::test_support
