@@ -1529,14 +1529,11 @@ Update HtcConcrete::integrate_step(const State& old, const Vector6& de,
     std::array<std::array<double, 3>, 3> dir;
     for (int i = 0; i < 3; ++i)
       dir[i] = {nv[i][0], nv[i][1], nv[i][2]};
-    u.passes = 1;
     if (rankine_1_closed_form(old, tr, str, dir, dt, u))
+    {
+      u.passes = 1;
       return u;
-    u.passes = 0;
-    u.state = old;
-    u.state.stress = tr;
-    u.state.kappa_c_rate = u.state.kappa_t_rate = 0.0;
-    u.tangent = De;
+    }
   }
   unsigned set = set0;
 
@@ -1850,6 +1847,9 @@ bool HtcConcrete::rankine_1_closed_form(
   {
     return false;
   }
+  Matrix6 T;
+  if (!rankine_1_tangent(ft, mu, dt, str, x.data(), dir, T))
+    return false;
   u.state = old;
   State& ns = u.state;
   ns.stress = {0, 0, 0, 0, 0, 0};
@@ -1864,8 +1864,7 @@ bool HtcConcrete::rankine_1_closed_form(
   ns.kappa_t_rate = dt > 0.0 ? (ns.kappa_t - kt0) / dt : 0.0;
   ns.kappa_c_rate = 0.0;
   add_plastic_strain(ns.plastic_strain, tr, ns.stress, d_.E, d_.nu, d_.G);
-  if (!rankine_1_tangent(ft, mu, dt, str, x.data(), dir, u.tangent))
-    return false;
+  u.tangent = T;
   u.active = rankine_1;
   u.iterations = 0;
   u.converged = true;
@@ -1940,6 +1939,12 @@ bool HtcConcrete::plane_stress_tension(const State& old, Vector6& de, double dt,
     nx /= n;
     ny /= n;
   }
+  const std::array<double, 3> x3 = {x1, x2, 0.0};
+  const std::array<std::array<double, 3>, 3> dir = {
+      {{nx, ny, 0.0}, {-ny, nx, 0.0}, {0.0, 0.0, 1.0}}};
+  Matrix6 T;
+  if (!rankine_1_tangent(ft, mu, dt, str, x3.data(), dir, T))
+    return false;
   // sigma_33 = lambda (tr de - mu) + 2G de_33 + sigma_33,old = 0 (the flow
   // n1 n1 has no 33 part and trace 1).
   de[2] = -(lam * (de[0] + de[1] - mu) + old.stress[2]) / (lam + 2.0 * G);
@@ -1955,11 +1960,7 @@ bool HtcConcrete::plane_stress_tension(const State& old, Vector6& de, double dt,
   ns.kappa_t_rate = ktd;
   ns.kappa_c_rate = 0.0;
   add_plastic_strain(ns.plastic_strain, tr, ns.stress, E, nu, G);
-  const std::array<double, 3> x3 = {x1, x2, 0.0};
-  const std::array<std::array<double, 3>, 3> dir = {
-      {{nx, ny, 0.0}, {-ny, nx, 0.0}, {0.0, 0.0, 1.0}}};
-  if (!rankine_1_tangent(ft, mu, dt, str, x3.data(), dir, u.tangent))
-    return false;
+  u.tangent = T;
   u.active = rankine_1;
   u.iterations = 0;
   u.passes = 1;

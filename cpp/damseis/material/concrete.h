@@ -219,7 +219,7 @@ private:
                  bool probe_edge, bool& edge_left) const;
   /// The return to the Rankine plane alone in 3D (str: trial principal
   /// stresses, descending, dir their directions; tr the trial stress), if
-  /// that set is the answer; else false and u partly written.
+  /// that set is the answer; else false and nothing written.
   bool rankine_1_closed_form(const State& old, const Vector6& tr,
                              const std::array<double, 3>& str,
                              const std::array<std::array<double, 3>, 3>& dir,
