@@ -214,6 +214,30 @@ struct Sparse6
   }
 };
 
+/// The stress sum_i x_i n_i n_i^T (Voigt) of principal values x along the
+/// directions dir.
+Vector6 from_principal(const double* x,
+                       const std::array<std::array<double, 3>, 3>& dir)
+{
+  Vector6 s = {0, 0, 0, 0, 0, 0};
+  for (int i = 0; i < 3; ++i)
+  {
+    const Eigen::Vector3d n(dir[i][0], dir[i][1], dir[i][2]);
+    const Vector6 E = outer_vec(n, n);
+    for (int a = 0; a < 6; ++a)
+      s[a] += x[i] * E[a];
+  }
+  return s;
+}
+
+/// The first iterate of the Rankine multiplier of a crack opening: the old
+/// step's kappa_t rate over this step (-1, none, if it was not opening).
+double old_rate_multiplier(const State& old, double dt)
+{
+  return dt > 0.0 && old.kappa_t_rate > 0.0 ? old.kappa_t_rate * dt / c23
+                                            : -1.0;
+}
+
 /// The elastic trial stress old + De de.
 Vector6 trial_stress(const Vector6& old, const Matrix6& De, const Vector6& de)
 {
@@ -1518,6 +1542,9 @@ Update HtcConcrete::integrate_step(const State& old, const Vector6& de,
   std::array<double, 3> str;
   Eigen::Vector3d nv[3];
   principal_axes(tr, str, nv);
+  std::array<std::array<double, 3>, 3> dir;
+  for (int i = 0; i < 3; ++i)
+    dir[i] = {nv[i][0], nv[i][1], nv[i][2]};
   std::array<std::array<double, 3>, 5> ng;
   surfaces<double>(str, old.kappa_c, old.kappa_t, 0.0, 0.0, phi, &ng);
   const unsigned set0 = predict_set(str, old.kappa_c, old.kappa_t, phi, ng);
@@ -1526,9 +1553,6 @@ Update HtcConcrete::integrate_step(const State& old, const Vector6& de,
     // A crack opening: the return to the Rankine plane alone in closed form
     // where it is the answer (solve_set's start for this set, which its
     // Newton iteration confirms without an iteration).
-    std::array<std::array<double, 3>, 3> dir;
-    for (int i = 0; i < 3; ++i)
-      dir[i] = {nv[i][0], nv[i][1], nv[i][2]};
     if (rankine_1_closed_form(old, tr, str, dir, dt, u))
     {
       u.passes = 1;
@@ -1713,13 +1737,7 @@ Update HtcConcrete::integrate_step(const State& old, const Vector6& de,
   // New state.
   u.active = set;
   State& ns = u.state;
-  ns.stress = {0, 0, 0, 0, 0, 0};
-  for (int i = 0; i < 3; ++i)
-  {
-    const Vector6 E = outer_vec(nv[i], nv[i]);
-    for (int a = 0; a < 6; ++a)
-      ns.stress[a] += x[i] * E[a];
-  }
+  ns.stress = from_principal(x.data(), dir);
   ns.kappa_c = x[3];
   ns.kappa_t = x[4];
   ns.kappa_c_rate = dt > 0 ? (x[3] - old.kappa_c) / dt : 0.0;
@@ -1728,9 +1746,6 @@ Update HtcConcrete::integrate_step(const State& old, const Vector6& de,
 
   // Consistent tangent: d(sigma)/d(sigma_tr) of the coaxial return (the
   // principal part from the converged Jacobian), times D.
-  std::array<std::array<double, 3>, 3> dir;
-  for (int i = 0; i < 3; ++i)
-    dir[i] = {nv[i][0], nv[i][1], nv[i][2]};
   u.tangent = coaxial_tangent(C, str, x.data(), dir);
   return u;
 }
@@ -1815,6 +1830,20 @@ bool HtcConcrete::rankine_1_tangent(
   return true;
 }
 
+bool HtcConcrete::rankine_1_others_hold(const std::array<double, 3>& x,
+                                        double kc, double ft) const
+{
+  // surfaces() at kappa_c = kc with zero rate and the kappa_t (and rate) of
+  // strength ft; the HTC branches and sigma_2, sigma_3 <= ft within
+  // integrate_step's tol_viol.
+  const double tol_viol = 1e-8 * d_.fc0;
+  std::array<double, 5> ph;
+  const double fc = d_.fc0 * hc(kc), ifc = 1.0 / fc;
+  surfaces_at<double>(x, ft, ifc, htc_of(ft, fc, ifc), ph, nullptr);
+  return ph[0] <= tol_viol && ph[1] <= tol_viol && ph[3] <= tol_viol &&
+         ph[4] <= tol_viol;
+}
+
 bool HtcConcrete::rankine_1_closed_form(
     const State& old, const Vector6& tr, const std::array<double, 3>& str,
     const std::array<std::array<double, 3>, 3>& dir, double dt, Update& u) const
@@ -1823,27 +1852,17 @@ bool HtcConcrete::rankine_1_closed_form(
     return false;
   const double lam = d_.lambda, a1 = lam + 2.0 * d_.G;
   const double kt0 = old.kappa_t, kc0 = old.kappa_c;
-  // First iterate: the old rate's multiplier (as plane_stress_tension).
-  const double guess =
-      dt > 0.0 && old.kappa_t_rate > 0.0 ? old.kappa_t_rate * dt / c23 : -1.0;
   double ft = 0.0;
-  const double mu =
-      rankine_1_multiplier(str[0], kt0, dt, rate_on_, 0.0, guess, &ft);
+  const double mu = rankine_1_multiplier(str[0], kt0, dt, rate_on_, 0.0,
+                                         old_rate_multiplier(old, dt), &ft);
   if (!(mu > 0.0) || !std::isfinite(mu))
     return false;
   const std::array<double, 3> x = {str[0] - a1 * mu, str[1] - lam * mu,
                                    str[2] - lam * mu};
-  // The Kuhn-Tucker check of integrate_step (converged to tol, the other
-  // surfaces within tol_viol at kappa_c = kc0 with zero rate and kappa_t
-  // at its rate, whose strength is ft).
-  const double tol = p_.tolerance * d_.fc0, tol_viol = 1e-8 * d_.fc0;
-  if (std::abs(x[0] - ft) > tol || x[1] > x[0])
-    return false;
-  std::array<double, 5> ph;
-  const double fc = d_.fc0 * hc(kc0), ifc = 1.0 / fc;
-  surfaces_at<double>(x, ft, ifc, htc_of(ft, fc, ifc), ph, nullptr);
-  if (ph[0] > tol_viol || ph[1] > tol_viol || ph[3] > tol_viol ||
-      ph[4] > tol_viol)
+  // The Kuhn-Tucker check of integrate_step: converged to tol, the other
+  // surfaces hold.
+  if (std::abs(x[0] - ft) > p_.tolerance * d_.fc0 || x[1] > x[0] ||
+      !rankine_1_others_hold(x, kc0, ft))
   {
     return false;
   }
@@ -1852,14 +1871,7 @@ bool HtcConcrete::rankine_1_closed_form(
     return false;
   u.state = old;
   State& ns = u.state;
-  ns.stress = {0, 0, 0, 0, 0, 0};
-  for (int i = 0; i < 3; ++i)
-  {
-    const Eigen::Vector3d n(dir[i][0], dir[i][1], dir[i][2]);
-    const Vector6 E = outer_vec(n, n);
-    for (int a = 0; a < 6; ++a)
-      ns.stress[a] += x[i] * E[a];
-  }
+  ns.stress = from_principal(x.data(), dir);
   ns.kappa_t = kt0 + c23 * mu;
   ns.kappa_t_rate = dt > 0.0 ? (ns.kappa_t - kt0) / dt : 0.0;
   ns.kappa_c_rate = 0.0;
@@ -1900,10 +1912,9 @@ bool HtcConcrete::plane_stress_tension(const State& old, Vector6& de, double dt,
   // First iterate: the old rate's multiplier (the crack opens at a
   // steady rate over a few steps; 3.9 instead of 5.8 iterations in the
   // Koyna viscoplastic run).
-  const double guess =
-      dt > 0.0 && old.kappa_t_rate > 0.0 ? old.kappa_t_rate * dt / c23 : -1.0;
   double ft = 0.0;
-  const double mu = rankine_1_multiplier(s1, kt0, dt, rate_on_, Ep, guess, &ft);
+  const double mu = rankine_1_multiplier(s1, kt0, dt, rate_on_, Ep,
+                                         old_rate_multiplier(old, dt), &ft);
   if (!(mu > 0.0) || !std::isfinite(mu))
     return false;
   const double kt = kt0 + c23 * mu;
@@ -1914,15 +1925,12 @@ bool HtcConcrete::plane_stress_tension(const State& old, Vector6& de, double dt,
   // Kuhn-Tucker check (tol_viol).
   if (std::abs(x1 - ft) > tol)
     return false;
-  // (surfaces() at kappa_c = kc0 with zero rate, kappa_t = kt at rate ktd,
-  // whose strength is ft.)
-  std::array<double, 3> xs = {x1, std::max(x2, 0.0), std::min(x2, 0.0)};
-  std::array<double, 5> ph;
-  const double fc = d_.fc0 * hc(kc0), ifc = 1.0 / fc;
-  surfaces_at<double>(xs, ft, ifc, htc_of(ft, fc, ifc), ph, nullptr);
-  const double tol_viol = 1e-8 * d_.fc0;
-  if (ph[0] > tol_viol || ph[1] > tol_viol || x2 > ft + tol_viol)
+  // (The principal stresses with sigma_33 = 0, descending.)
+  if (!rankine_1_others_hold({x1, std::max(x2, 0.0), std::min(x2, 0.0)}, kc0,
+                             ft))
+  {
     return false;
+  }
 
   // Tangent of the 3D return at this eps_33 (rankine_1_tangent): the trial
   // principal stresses (sigma_1, sigma_2, sigma_33) + mu D n1 n1.

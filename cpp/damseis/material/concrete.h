@@ -224,6 +224,11 @@ private:
                              const std::array<double, 3>& str,
                              const std::array<std::array<double, 3>, 3>& dir,
                              double dt, Update& u) const;
+  /// The other surfaces at the result x (principal, descending) of a return
+  /// to the Rankine plane alone: the HTC branches at kappa_c = kc (zero
+  /// rate) and sigma_2, sigma_3 <= ft, within integrate_step's tolerance.
+  bool rankine_1_others_hold(const std::array<double, 3>& x, double kc,
+                             double ft) const;
   /// The consistent tangent of a return to the Rankine plane alone (x the
   /// returned principal stresses, ft the strength at multiplier mu); false
   /// where d(ft - sigma_1)/d mu is not positive.
