@@ -16,7 +16,11 @@ nlohmann::json run_one(MPI_Comm comm, const GravityDamConfig& cfg,
                        const std::string& case_text)
 {
   const bool foundation = cfg.section.foundation;
-  std::map<int, fem::Material> materials = {{tags::dam, cfg.concrete}};
+  // The dam's E with the factor of its model (rate-independent: +30%
+  // convention; viscoplastic: static unless asked otherwise).
+  fem::Material dam = cfg.concrete;
+  dam.E = cfg.concrete_model.params.E;
+  std::map<int, fem::Material> materials = {{tags::dam, dam}};
   if (foundation)
     materials[tags::foundation] = cfg.rock;
   fem::ElasticModel fe(geometry::build_gravity_dam(comm, cfg.section),
@@ -48,13 +52,15 @@ nlohmann::json run_one(MPI_Comm comm, const GravityDamConfig& cfg,
   {
     summary =
         run_nonlinear_seismic(fe, cfg.seismic, cfg.concrete_model, materials,
-                              cfg.plane, {}, out_dir, case_text);
+                              cfg.plane, extra_vecs, out_dir, case_text);
     summary["analysis"] =
         "gravity dam section, HTC concrete (" + to_string(kind) + ")";
   }
   summary["plane"] = cfg.plane == fem::PlaneMode::plane_stress ? "plane_stress"
                                                                : "plane_strain";
   summary["base"] = foundation ? "massless foundation" : "rigid";
+  summary["dam_E_pa"] = dam.E;
+  summary["dam_E_factor"] = cfg.concrete_model.applied.E;
   summary["silt_level_m"] = cfg.silt.level;
   summary["uplift"] = cfg.uplift_on;
   write_summary_and_plots(comm, summary, out_dir, cfg.seismic.plots,
@@ -113,25 +119,7 @@ nlohmann::json run_gravity_dam_analysis(MPI_Comm comm,
   {
     GravityDamConfig c = cfg;
     c.table1 = false;
-    auto& m = c.concrete_model;
-    m.kind = kind;
-    m.params.mode =
-        kind == ConcreteModelKind::viscoplastic ? material::Mode::viscoplastic
-        : kind == ConcreteModelKind::plastic    ? material::Mode::plastic
-                                                : material::Mode::elastic;
-    if (kind == ConcreteModelKind::viscoplastic)
-    {
-      // Rate functions give the dynamic strength: static strengths.
-      m.params.fc0 /= m.factor_strength;
-      m.params.ft0 /= m.factor_strength;
-      m.factor_strength = 1.0;
-      if (cfg.viscoplastic_static_E)
-      {
-        m.params.E /= m.factor_E;
-        c.concrete.E /= m.factor_E;
-        m.factor_E = 1.0;
-      }
-    }
+    c.concrete_model = with_model(cfg.concrete_model, kind);
     results::print(comm, "== " + to_string(kind) + " ==");
     runs.emplace_back(to_string(kind),
                       run_one(comm, c, out_dir / to_string(kind), case_text));

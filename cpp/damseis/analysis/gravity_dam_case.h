@@ -17,17 +17,16 @@ struct GravityDamConfig
   geometry::GravityDamSection section;
   int order = 2;
   fem::PlaneMode plane = fem::PlaneMode::plane_stress;
+  /// Static elastic constants of the dam concrete (the model's E is
+  /// concrete_model.params.E, with its dynamic factor).
   fem::Material concrete;
   fem::Material rock; ///< foundation (massless: rho = 0)
   SeismicSettings seismic;
-  /// Dam concrete model (linear engine or HTC elastic/plastic/viscoplastic);
-  /// concrete.E above already includes the dynamic factor.
+  /// Dam concrete model (linear engine or HTC elastic/plastic/viscoplastic)
+  /// with the dynamic factors of that model.
   ConcreteSettings concrete_model;
   /// Run elastic, plastic and viscoplastic and write table1.csv/.md.
   bool table1 = false;
-  /// In the Table 1 study, the viscoplastic run also takes the static E
-  /// (the paper's RCC study: only the rate-independent run gets +30%).
-  bool viscoplastic_static_E = false;
   /// Silt on the upstream face (level 0: none) and uplift on the base.
   fem::Silt silt;
   bool uplift_on = false;
