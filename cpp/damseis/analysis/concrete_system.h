@@ -20,7 +20,7 @@ public:
   bool trial(Vec u, double dt) override
   {
     to_function(u, _u);
-    last = _m.update(_u, dt);
+    last = _m.update(_u, quasi_static ? 0.0 : dt);
     count(last);
     return last.failed == 0;
   }
@@ -59,6 +59,10 @@ public:
       accepted = last;
     return ok;
   }
+  /// Material updates as static steps (rate-independent material, no
+  /// IMPL-EX) whatever the integrator's dt: the dynamic relaxation of the
+  /// static stage.
+  bool quasi_static = false;
   fem::MaterialUpdateStats last;     ///< of the last trial
   fem::MaterialUpdateStats accepted; ///< of the last accepted trial
   std::int64_t substepped = 0;       ///< sub-stepped point updates, all trials

@@ -3,6 +3,7 @@
 #include "concrete_system.h"
 #include "linear_seismic.h"
 #include "run_support.h"
+#include "static_stage.h"
 #include <chrono>
 #include <cmath>
 #include <damseis/fem/concrete_model.h>
@@ -84,6 +85,29 @@ results::Extreme scalar_extreme(MPI_Comm comm, const ScalarEnvelope& e,
   return {global.v, {data[0], data[1], data[2]}, data[3]};
 }
 
+/// Global number of cells of a region.
+std::int64_t region_cell_count(MPI_Comm comm, const geometry::Model& model,
+                               int region)
+{
+  const std::int32_t owned = model.mesh->topology()
+                                 .index_map(model.mesh->topology().dim())
+                                 ->size_local();
+  std::int64_t n = 0;
+  for (std::int32_t c : region_cells(model, region))
+    n += c < owned ? 1 : 0;
+  MPI_Allreduce(MPI_IN_PLACE, &n, 1, MPI_INT64_T, MPI_SUM, comm);
+  return n;
+}
+
+/// The snap-back limit of the cell size, E Gf / (s ft^2) [m], s the
+/// snap-back safety factor (1.25)
+/// (material/README.md).
+double concrete_characteristic_length(const ConcreteSettings& c)
+{
+  const auto& p = c.params;
+  return p.E * p.Gf / (p.snap_back_safety * p.ft0 * p.ft0);
+}
+
 /// dam_points.csv on rank 0: one row per owned dam point of every rank.
 void write_dam_points(MPI_Comm comm, const results::StressEnvelope& env,
                       const std::vector<std::int8_t>& in_dam,
@@ -137,6 +161,42 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   cm.set_implex(concrete.implex && plastic);
   ConcreteSystem system(cm);
 
+  // Softening regularised by the crack band: say where it is not exact
+  // (material/README.md, README "softening studies").
+  if (plastic && fe.degree() > 1)
+  {
+    results::print(comm,
+                   "note: P" + std::to_string(fe.degree()) +
+                       " elements: the crack band (energy Gf per unit crack "
+                       "area) is exact for P1 only (a P2 cell can localise in "
+                       "part of its points: 0.75 Gf in the crack-band test); "
+                       "use mesh.order = 1 for softening studies");
+  }
+  const auto ft_low = cm.reduced_tensile_strength_range();
+  if (plastic && cm.cells_with_reduced_strength() > 0)
+  {
+    std::ostringstream note;
+    note.precision(3);
+    note << "note: " << cm.cells_with_reduced_strength() << " of "
+         << region_cell_count(comm, model, tags::dam)
+         << " dam cells are larger than E Gf / (1.25 ft^2) = "
+         << concrete_characteristic_length(concrete) << " m (snap-back "
+         << "limit of the softening): their tensile strength is lowered "
+         << "from " << concrete.params.ft0 * 1e-6 << " to " << ft_low[0] * 1e-6
+         << ".." << ft_low[1] * 1e-6
+         << " MPa (the crack band is not honoured there; summary.json "
+            "concrete.cells_with_reduced_tensile_strength); refine the mesh "
+            "where the concrete cracks";
+    results::print(comm, note.str());
+  }
+
+  // Modal analysis of the initial elastic system; Rayleigh damping with K0.
+  Matrix M0(nullptr, false);
+  if (added)
+    M0 = Matrix(fe.assemble_mass(nullptr), false);
+  const ModalResult modal =
+      modal_and_damping(K.mat(), M.mat(), added ? M0.mat() : nullptr, s);
+
   // Static stage: dead weight, then the reservoir (and silt, uplift) in
   // increments, with the rate-independent material.
   std::array<double, 3> g = {0, 0, 0};
@@ -151,53 +211,25 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   }
   for (Vec extra : extra_static_loads)
     VecAXPY(F_static.vec(), 1.0, extra);
-  Vector zero = column_vector(K.mat());
   Vector u_static = column_vector(K.mat());
-  const auto static_g =
-      dynamics::solve_static(system, K.mat(), zero.vec(), F_g.vec(), 1,
-                             u_static.vec(), concrete.newton, s.factorization);
-  const auto static_r = dynamics::solve_static(
-      system, K.mat(), F_g.vec(), F_static.vec(), concrete.static_increments,
-      u_static.vec(), concrete.newton, s.factorization);
+  StaticStageSettings stage;
+  stage.increments = concrete.static_increments;
+  stage.newton = concrete.newton;
+  stage.factorization = s.factorization;
+  stage.f1_hz = modal.f1;
+  stage.f2_hz = modal.f2;
+  const StaticStageReport static_stage =
+      solve_static_stage(system, K.mat(), M.mat(), F_g.vec(), F_static.vec(),
+                         u_static.vec(), stage);
   const std::vector<double> sig_static(cm.stress().begin(), cm.stress().end());
   Vector fint0 = column_vector(K.mat());
   system.internal_force(fint0.vec());
-  const double static_seconds = seconds_since(wall_start);
-  // Softening regularised by the crack band: say where it is not exact
-  // (material/README.md, README "softening studies").
-  if (plastic && fe.degree() > 1)
-  {
-    results::print(comm,
-                   "note: P" + std::to_string(fe.degree()) +
-                       " elements: the crack band (energy Gf per unit crack "
-                       "area) is exact for P1 only (a P2 cell can localise in "
-                       "part of its points: 0.75 Gf in the crack-band test); "
-                       "use mesh.order = 1 for softening studies");
-  }
-  if (plastic && cm.cells_with_reduced_strength() > 0)
-  {
-    results::print(
-        comm,
-        "note: " + std::to_string(cm.cells_with_reduced_strength()) +
-            " cells are larger than E Gf / (1.25 ft^2) (snap-back "
-            "limit of the softening): their tensile strength is lowered to "
-            "avoid snap-back (summary.json concrete."
-            "cells_with_reduced_tensile_strength); refine the "
-            "mesh where the concrete cracks");
-  }
+  const double static_seconds = seconds_since(wall_start) - modal.seconds;
   results::print(comm,
-                 "static stage: " +
-                     std::to_string(static_g.iterations + static_r.iterations) +
+                 "static stage: " + std::to_string(static_stage.iterations) +
                      " Newton iterations, " +
                      std::to_string(system.accepted.inelastic) +
                      " inelastic points");
-
-  // Modal analysis of the initial elastic system; Rayleigh damping with K0.
-  Matrix M0(nullptr, false);
-  if (added)
-    M0 = Matrix(fe.assemble_mass(nullptr), false);
-  const ModalResult modal =
-      modal_and_damping(K.mat(), M.mat(), added ? M0.mat() : nullptr, s);
 
   // Dynamic stage: M a + C v + f_int(u) = F_static - M sum_c r_c a_gc(t),
   // u relative to the base, total (static included).
@@ -497,8 +529,16 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
       {"factor_strength", concrete.applied.strength},
       {"material_bins", cm.material_count()},
       {"material_integration", concrete.implex ? "implex" : "implicit"},
+      {"characteristic_length_m", concrete_characteristic_length(concrete)},
       {"cells_with_reduced_tensile_strength", cm.cells_with_reduced_strength()},
-      {"crack_band_exact", fe.degree() == 1}};
+      {"reduced_tensile_strength_mpa",
+       cm.cells_with_reduced_strength() > 0
+           ? json{{"min", ft_low[0] * 1e-6}, {"max", ft_low[1] * 1e-6}}
+           : json(nullptr)},
+      // Energy Gf per unit crack area whatever the mesh: P1 cells no
+      // larger than the snap-back limit.
+      {"crack_band_exact",
+       fe.degree() == 1 && cm.cells_with_reduced_strength() == 0}};
   summary["max_kappa_t"] = {
       {"value", kt_max.value}, {"x", kt_max.x[0]}, {"y", kt_max.x[1]}};
   summary["max_strain_rate_per_s"] = {{"value", rate_max.value},
@@ -513,11 +553,12 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
                                         {"x", syy_lo.x[0]},
                                         {"y", syy_lo.x[1]},
                                         {"t", syy_lo.t}};
+  summary["static_stage"] = static_stage.to_json();
   summary["newton"] = {
       {"rtol", concrete.newton.rtol},
       {"extrapolated_predictor", newton_settings.extrapolated_predictor},
-      {"static_iterations", static_g.iterations + static_r.iterations},
-      {"static_cuts", static_g.cuts + static_r.cuts},
+      {"static_iterations", static_stage.iterations},
+      {"static_cuts", static_stage.cuts},
       {"iterations", stats[0]},
       {"iterations_per_step", stats[0] / steps_all},
       {"max_iterations_in_a_step", stats[3]},

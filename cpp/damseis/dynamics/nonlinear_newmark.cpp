@@ -241,10 +241,12 @@ StepReport solve_static(NonlinearSystem& system, Mat K0, Vec F_from, Vec F_to,
       for (Vec* x : {&F, &R, &du, &ut, &fint})
         VecDestroy(x);
       MatDestroy(&J);
-      throw StepFailure("static load step to factor " + std::to_string(target) +
-                        " did not converge after " + std::to_string(cuts) +
-                        " halvings (last residual " +
-                        std::to_string(report.residual) + " of the load)");
+      throw StaticStepFailure(
+          "static load step to factor " + std::to_string(target) +
+              " did not converge after " + std::to_string(cuts) +
+              " halvings (last residual " + std::to_string(report.residual) +
+              " of the load)",
+          done, report);
     }
     todo.back().second = cuts + 1;
     todo.emplace_back(0.5 * (done + target), cuts + 1);

@@ -112,10 +112,25 @@ struct StepFailure : std::runtime_error
   using std::runtime_error::runtime_error;
 };
 
+/// Thrown by solve_static: `reached` is the load factor of the last
+/// converged increment (the displacement and the committed material state
+/// are those of that factor).
+struct StaticStepFailure : StepFailure
+{
+  StaticStepFailure(const std::string& what, double reached,
+                    const StepReport& report)
+      : StepFailure(what), reached(reached), report(report)
+  {
+  }
+  double reached;
+  StepReport report; ///< the work done, failed increments included
+};
+
 /// Quasi-static solution of f_int(u) = F: the load goes from F_from to F_to
 /// in `increments` equal steps (static material: dt = 0). u: committed
 /// displacement on entry, solution on exit. K0: the initial stiffness (fixed
-/// rows identity).
+/// rows identity). An increment that fails after settings.max_cuts halvings
+/// throws StaticStepFailure, u then holding the last converged state.
 StepReport solve_static(NonlinearSystem& system, Mat K0, Vec F_from, Vec F_to,
                         int increments, Vec u, const NewtonSettings& settings,
                         fem::Factorization factorization);

@@ -191,10 +191,17 @@ ConcreteModel::ConcreteModel(
         _dynamic[pos->second]->derived().tension_strength_reduced)
     {
       ++reduced_local;
+      const double ft = _dynamic[pos->second]->derived().ft0;
+      _reduced_ft[0] = std::min(_reduced_ft[0], ft);
+      _reduced_ft[1] = std::max(_reduced_ft[1], ft);
     }
   }
   MPI_Allreduce(&reduced_local, &_reduced_cells, 1, MPI_INT64_T, MPI_SUM,
                 mesh->comm());
+  _reduced_ft[1] = -_reduced_ft[1];
+  MPI_Allreduce(MPI_IN_PLACE, _reduced_ft.data(), 2, MPI_DOUBLE, MPI_MIN,
+                mesh->comm());
+  _reduced_ft[1] = -_reduced_ft[1];
   const std::int64_t owned_points =
       static_cast<std::int64_t>(_num_owned_cells) * _nq;
   MPI_Allreduce(&owned_points, &_num_owned_points, 1, MPI_INT64_T, MPI_SUM,

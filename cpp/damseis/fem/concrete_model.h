@@ -5,6 +5,8 @@
 #pragma once
 
 #include "elastic_model.h"
+#include <array>
+#include <cmath>
 #include <damseis/material/concrete.h>
 #include <dolfinx/fem/Expression.h>
 #include <dolfinx/la/petsc.h>
@@ -140,6 +142,12 @@ public:
   /// Cells whose tensile strength was lowered to avoid snap-back (h larger
   /// than the characteristic length; see material/README.md), all ranks.
   std::int64_t cells_with_reduced_strength() const { return _reduced_cells; }
+  /// The smallest and largest lowered tensile strength of those cells [Pa]
+  /// (+inf, -inf if there are none).
+  std::array<double, 2> reduced_tensile_strength_range() const
+  {
+    return _reduced_ft;
+  }
 
 private:
   /// The in-plane 3x3 tangent (xx, yy, xy) of a 6x6 one into ct (plane
@@ -221,6 +229,7 @@ private:
   std::array<std::vector<double>, 5> _out;
   double _trial_dt = 0.0;
   std::int64_t _reduced_cells = 0;
+  std::array<double, 2> _reduced_ft = {HUGE_VAL, -HUGE_VAL};
   // IMPL-EX: the plastic strain increment of the last accepted dynamic step
   // per point, and that step's length (0: none yet, no extrapolation).
   bool _implex = false;

@@ -1,0 +1,172 @@
+#include "static_stage.h"
+#include <cmath>
+#include <damseis/results/progress.h>
+#include <dolfinx/la/petsc.h>
+#include <sstream>
+
+namespace damseis::analysis
+{
+namespace
+{
+using dolfinx::la::petsc::Vector;
+
+/// F = (1 - lambda) F_g + lambda F_static.
+void load_at(double lambda, Vec F_g, Vec F_static, Vec F)
+{
+  VecAXPBYPCZ(F, 1.0 - lambda, lambda, 0.0, F_g, F_static);
+}
+
+/// Dynamic relaxation from the committed state at load factor `from` to the
+/// full load (see static_stage.h); returns the steps taken and the final
+/// largest speed. u: the state at `from` on entry, the relaxed one on exit.
+std::pair<int, double> relax(ConcreteSystem& system, Mat K, Mat M, Vec F_g,
+                             Vec F_static, double from, Vec u,
+                             const StaticStageSettings& s)
+{
+  MPI_Comm comm;
+  PetscObjectGetComm(reinterpret_cast<PetscObject>(K), &comm);
+  const double period = 1.0 / s.f1_hz;
+  dynamics::TimeScheme scheme;
+  scheme.dt = period / s.steps_per_period;
+  const int ramp =
+      static_cast<int>(std::ceil(s.ramp_periods * s.steps_per_period));
+  const int hold =
+      static_cast<int>(std::ceil(s.hold_periods * s.steps_per_period));
+  dynamics::NewtonSettings newton = s.newton;
+  newton.extrapolated_predictor = false;
+  // The rate-independent material: material updates as static steps.
+  system.quasi_static = true;
+  dynamics::NonlinearNewmark integrator(
+      M, K, dynamics::RayleighDamping::from_ratio(1.0, s.f1_hz, s.f2_hz),
+      scheme, system, newton, s.factorization);
+  Vector zero(nullptr, false), F(nullptr, false), fint(nullptr, false);
+  for (Vector* x : {&zero, &F, &fint})
+  {
+    Vec v;
+    VecDuplicate(u, &v);
+    VecSet(v, 0.0);
+    *x = Vector(v, false);
+  }
+  load_at(from, F_g, F_static, F.vec());
+  system.internal_force(fint.vec());
+  integrator.set_state(u, zero.vec(), zero.vec(), F.vec(), fint.vec());
+  results::Progress progress(comm, ramp + hold);
+  for (int k = 1; k <= ramp + hold; ++k)
+  {
+    const double lambda =
+        from + (1.0 - from) * std::min(1.0, static_cast<double>(k) / ramp);
+    load_at(lambda, F_g, F_static, F.vec());
+    try
+    {
+      integrator.step(F.vec());
+    }
+    catch (const dynamics::StepFailure& e)
+    {
+      system.quasi_static = false;
+      throw dynamics::StepFailure("static stage: dynamic relaxation step " +
+                                  std::to_string(k) + " (load factor " +
+                                  std::to_string(lambda) + "): " + e.what());
+    }
+    progress.report(k, k * scheme.dt, "  (static stage, dynamic relaxation)");
+  }
+  system.quasi_static = false;
+  double speed = 0.0;
+  VecNorm(integrator.v(), NORM_INFINITY, &speed);
+  VecCopy(integrator.u(), u);
+  return {ramp + hold, speed};
+}
+} // namespace
+
+nlohmann::json StaticStageReport::to_json() const
+{
+  return {{"newton_iterations", iterations},
+          {"cuts", cuts},
+          {"load_controlled_factor", load_controlled_factor},
+          {"dynamic_relaxation_steps", relaxation_steps},
+          {"dynamic_relaxation_final_speed_m_per_s", relaxation_final_speed}};
+}
+
+StaticStageReport solve_static_stage(ConcreteSystem& system, Mat K, Mat M,
+                                     Vec F_g, Vec F_static, Vec u,
+                                     const StaticStageSettings& s)
+{
+  MPI_Comm comm;
+  PetscObjectGetComm(reinterpret_cast<PetscObject>(K), &comm);
+  StaticStageReport report;
+  auto add = [&](const dynamics::StepReport& r)
+  {
+    report.iterations += r.iterations;
+    report.cuts += r.cuts;
+  };
+  Vector zero(nullptr, false);
+  {
+    Vec z;
+    VecDuplicate(u, &z);
+    VecSet(z, 0.0);
+    zero = Vector(z, false);
+  }
+  VecSet(u, 0.0);
+  add(dynamics::solve_static(system, K, zero.vec(), F_g, 1, u, s.newton,
+                             s.factorization));
+  // Load control up to relax_from (the loads after the dead weight).
+  Vec F_to = F_static;
+  Vector F_part(nullptr, false);
+  if (s.relax_from < 1.0)
+  {
+    Vec v;
+    VecDuplicate(u, &v);
+    load_at(s.relax_from, F_g, F_static, v);
+    F_part = Vector(v, false);
+    F_to = v;
+  }
+  try
+  {
+    add(dynamics::solve_static(system, K, F_g, F_to, s.increments, u, s.newton,
+                               s.factorization));
+    if (s.relax_from >= 1.0)
+      return report;
+    report.load_controlled_factor = s.relax_from;
+  }
+  catch (const dynamics::StaticStepFailure& e)
+  {
+    add(e.report);
+    report.load_controlled_factor = e.reached * std::min(1.0, s.relax_from);
+    std::ostringstream line;
+    line.precision(4);
+    line << "static stage: under load control Newton stops at "
+         << report.load_controlled_factor
+         << " of the loads after the dead weight (" << e.what()
+         << "); the rest is applied by dynamic relaxation (critically "
+            "damped, ramp "
+         << s.ramp_periods << " and hold " << s.hold_periods
+         << " fundamental periods)";
+    results::print(comm, line.str());
+  }
+  const auto [steps, speed] =
+      relax(system, K, M, F_g, F_static, report.load_controlled_factor, u, s);
+  report.relaxation_steps = steps;
+  report.relaxation_final_speed = speed;
+  // The equilibrium at the full load from the relaxed state (solve_static
+  // needs distinct start and end loads).
+  VecCopy(F_static, zero.vec());
+  try
+  {
+    add(dynamics::solve_static(system, K, zero.vec(), F_static, 1, u, s.newton,
+                               s.factorization));
+  }
+  catch (const dynamics::StepFailure& e)
+  {
+    throw dynamics::StepFailure(
+        std::string("static stage: no equilibrium under the full static "
+                    "loads after dynamic relaxation (") +
+        e.what() + ")");
+  }
+  std::ostringstream line;
+  line.precision(3);
+  line << "static stage: relaxed in " << steps
+       << " steps (largest speed at the end " << speed
+       << " m/s), equilibrium at the full load found";
+  results::print(comm, line.str());
+  return report;
+}
+} // namespace damseis::analysis
