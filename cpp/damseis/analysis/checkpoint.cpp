@@ -1,4 +1,5 @@
 #include "checkpoint.h"
+#include <damseis/case/case.h>
 #include <cstring>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -102,7 +103,7 @@ std::optional<CheckpointData> read_checkpoint(MPI_Comm comm,
   const auto info = nlohmann::json::parse(meta);
   if (info.at("ranks").get<int>() != size)
   {
-    throw std::runtime_error(
+    throw input::InputError(
         "the checkpoint in " + dir.string() + " was written by " +
         std::to_string(info.at("ranks").get<int>()) +
         " MPI ranks; restart with the same number of ranks");
@@ -117,7 +118,7 @@ std::optional<CheckpointData> read_checkpoint(MPI_Comm comm,
   MPI_Allreduce(&ok, &all_ok, 1, MPI_INT, MPI_MIN, comm);
   if (!all_ok)
   {
-    throw std::runtime_error("the checkpoint in " + dir.string() +
+    throw input::InputError("the checkpoint in " + dir.string() +
                              " does not match this model (mesh, order or "
                              "partition changed); remove it to start over");
   }
@@ -131,8 +132,12 @@ std::optional<CheckpointData> read_checkpoint(MPI_Comm comm,
             static_cast<std::streamsize>(values.size() * sizeof(double)));
     data.arrays.emplace(std::move(name), std::move(values));
   }
-  if (!in)
-    throw std::runtime_error("truncated checkpoint in " + dir.string());
+  int read_ok = in ? 1 : 0;
+  MPI_Allreduce(MPI_IN_PLACE, &read_ok, 1, MPI_INT, MPI_MIN, comm);
+  if (!read_ok)
+    throw input::InputError("truncated checkpoint in " + dir.string() +
+                            "; remove it (or set run.restart = false) to "
+                            "start over");
   return data;
 }
 } // namespace damseis::analysis

@@ -31,7 +31,7 @@ void write_checkpoint(MPI_Comm comm, const std::filesystem::path& dir,
                       const CheckpointData& data, std::uint64_t print);
 
 /// Reads the checkpoint in `dir` (collective). Returns nothing if there is
-/// none; throws std::runtime_error if it was written by a different number of
+/// none; throws input::InputError if it was written by a different number of
 /// ranks or for a different model (fingerprint mismatch).
 std::optional<CheckpointData> read_checkpoint(MPI_Comm comm,
                                               const std::filesystem::path& dir,

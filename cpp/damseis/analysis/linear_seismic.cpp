@@ -309,7 +309,9 @@ void write_summary_and_plots(MPI_Comm comm, const nlohmann::json& summary,
   MPI_Comm_rank(comm, &rank);
   if (rank != 0)
     return;
-  std::ofstream(out_dir / "summary.json") << summary.dump(2) << "\n";
+  nlohmann::json s = summary;
+  s["warnings"] = results::warnings();
+  std::ofstream(out_dir / "summary.json") << s.dump(2) << "\n";
   if (plots)
   {
     const std::string cmd = std::string(DAMSEIS_PYTHON) + " " +

@@ -69,6 +69,11 @@ void add_seismic_keys(input::Schema& s,
                "(empty: the base of the crown section)");
   s.boolean("output.plots", "true", "-",
             "write PNG plots (needs python3-matplotlib)");
+  s.string("output.overwrite", "clean", "-",
+           "an earlier run's results in the output folder: clean (delete "
+           "the files that run wrote, listed in .damseis_outputs; nothing "
+           "else), refuse (stop, exit 2) or keep (leave them)",
+           {"clean", "refuse", "keep"});
   s.integer("run.checkpoint_every", "0", "-",
             "steps between checkpoints (0: none)")
       .at_least(0);

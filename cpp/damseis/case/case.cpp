@@ -917,6 +917,8 @@ Case Case::load(const Schema& schema, const std::filesystem::path& file,
          given[path] = {std::get<Value>(std::move(converted)), subject};
        });
 
+  const std::size_t keys_in_file = given.size();
+
   // Overrides, in order (the last one wins).
   for (const std::string& override_text : overrides)
   {
@@ -945,6 +947,7 @@ Case Case::load(const Schema& schema, const std::filesystem::path& file,
   result.file_ = file;
   result.overrides_ = overrides;
   result.keys_ = schema.keys();
+  result.keys_in_file_ = keys_in_file;
   for (const Key& key : schema.keys())
   {
     const auto it = given.find(key.path);

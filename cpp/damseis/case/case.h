@@ -204,6 +204,10 @@ public:
   /// True if the key was given in the file or by --set (not defaulted).
   bool is_set(const std::string& key) const;
 
+  /// Number of keys the case file itself gives (0: an empty file, every
+  /// value a default or an override).
+  std::size_t keys_in_file() const { return keys_in_file_; }
+
   /// The case file, as given to load().
   const std::filesystem::path& file() const { return file_; }
 
@@ -231,6 +235,7 @@ private:
 
   std::filesystem::path file_;
   std::vector<std::string> overrides_;
+  std::size_t keys_in_file_ = 0;
   std::vector<Key> keys_;
   std::map<std::string, Entry> values_;
 };

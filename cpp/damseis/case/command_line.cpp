@@ -1,6 +1,7 @@
 #include "damseis/case/command_line.h"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <iostream>
 #include <memory>
 
@@ -23,6 +24,41 @@ public:
   }
 };
 
+/// "--set a=1, --set b=x": a real key, a key with choices and an array key
+/// of this schema (the first of each), with values of their kind.
+std::string set_examples(const Schema& schema)
+{
+  std::vector<std::string> ex;
+  auto first = [&](auto pred) -> const Key*
+  {
+    for (const Key& k : schema.keys())
+    {
+      if (pred(k))
+        return &k;
+    }
+    return nullptr;
+  };
+  if (const Key* k = first([](const Key& k) { return k.type == Type::real; }))
+    ex.push_back(k->path + "=" + k->default_value);
+  if (const Key* k = first([](const Key& k) { return k.choices.size() >= 2; }))
+    ex.push_back(k->path + "=" + k->choices[1]);
+  if (const Key* k = first(
+          [](const Key& k)
+          {
+            return (k.type == Type::real_array ||
+                    k.type == Type::integer_array) &&
+                   k.default_value != "[]";
+          }))
+  {
+    std::string v = k->default_value;
+    v.erase(std::remove(v.begin(), v.end(), ' '), v.end());
+    ex.push_back(k->path + "=" + v);
+  }
+  std::string text;
+  for (std::size_t i = 0; i < ex.size(); ++i)
+    text += (i ? ", --set " : "--set ") + ex[i];
+  return text;
+}
 } // namespace
 
 std::optional<CommandLine>
@@ -46,9 +82,8 @@ parse_command_line(int argc, char** argv, const std::string& demo,
       ->type_name("DIR")
       ->capture_default_str();
   app.add_option("--set", overrides,
-                 "Override a case key, e.g. --set material.E=31.027e9, "
-                 "--set output.stress=seismic, --set damping.modes=[1,3] "
-                 "(repeatable)")
+                 "Override a case key, e.g. " + set_examples(schema) +
+                     " (repeatable)")
       ->type_name("KEY=VALUE");
 
   try

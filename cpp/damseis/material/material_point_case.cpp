@@ -106,7 +106,15 @@ input::Schema material_point_schema()
                "cyclic: successive eps11 targets");
   s.real("path.strain_step", "1e-6", "-", "Axial strain per step").above(0);
   s.string("output.csv", "material_point.csv", "-",
-           "CSV file name in the output folder");
+           "CSV file name in the output folder (the plot takes its name "
+           "with .png)");
+  s.boolean("output.plots", "true", "-",
+            "write the PNG plot (needs python3-matplotlib)");
+  s.string("output.overwrite", "clean", "-",
+           "an earlier run's results in the output folder: clean (delete "
+           "the files that run wrote, listed in .damseis_outputs; nothing "
+           "else), refuse (stop, exit 2) or keep (leave them)",
+           {"clean", "refuse", "keep"});
   return s;
 }
 
@@ -115,6 +123,13 @@ MaterialPointConfig read_material_point_config(const input::Case& c)
   MaterialPointConfig cfg;
   cfg.material = read_concrete_parameters(c, "material");
   cfg.csv_name = c.string("output.csv");
+  if (cfg.csv_name.empty() ||
+      cfg.csv_name.find_first_of("/\\") != std::string::npos ||
+      cfg.csv_name == "." || cfg.csv_name == ".." || cfg.csv_name.size() < 5 ||
+      cfg.csv_name.substr(cfg.csv_name.size() - 4) != ".csv")
+    c.fail("output.csv", "= \"" + cfg.csv_name + "\" is not a plain file name",
+           "a name like material_point.csv (no folder; --out sets it)");
+  cfg.plots = c.boolean("output.plots");
   const std::string kind = c.string("path.kind");
   const double rate = c.real("path.strain_rate");
   const double step = c.real("path.strain_step");

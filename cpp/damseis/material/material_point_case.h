@@ -28,6 +28,7 @@ struct MaterialPointConfig
   ConcreteParameters material;
   std::vector<Segment> segments;
   std::string csv_name;
+  bool plots = true; ///< PNG of the curve (scripts/plot_material_point.py)
 };
 
 /// Builds the path segments from [path]; bad combinations -> InputError.

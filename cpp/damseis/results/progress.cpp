@@ -49,3 +49,26 @@ void print(MPI_Comm comm, const std::string& line)
   }
 }
 } // namespace damseis::results
+
+namespace damseis::results
+{
+namespace
+{
+std::vector<std::string>& warning_list()
+{
+  static std::vector<std::string> list;
+  return list;
+}
+} // namespace
+
+void warn(MPI_Comm comm, const std::string& text)
+{
+  warning_list().push_back(text);
+  print(comm, "warning: " + text);
+}
+
+const std::vector<std::string>& warnings()
+{
+  return warning_list();
+}
+} // namespace damseis::results

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <mpi.h>
 #include <string>
+#include <vector>
 
 namespace damseis::results
 {
@@ -29,4 +30,10 @@ void quiet_library_logging();
 
 /// Prints a line on rank 0 only.
 void print(MPI_Comm comm, const std::string& line);
+
+/// Prints "warning: <text>" on rank 0 and keeps the text for the run's
+/// summary (summary.json "warnings").
+void warn(MPI_Comm comm, const std::string& text);
+/// The warnings of this process so far.
+const std::vector<std::string>& warnings();
 } // namespace damseis::results
