@@ -200,6 +200,33 @@ TEST(RecordErrors, MalformedFiles)
                       Format::columns, 0.0);
 }
 
+// Binary files: refused as such, and no raw byte reaches the message (it
+// is cut at 40 bytes, other than printable ASCII as \xNN).
+TEST(RecordErrors, BinaryFilesGiveSafeMessages)
+{
+  const fs::path nul = write_temp(
+      "binary.at2", std::string("ab\0\x01\xff cd 1.0\n\x89PNG\r\n", 17));
+  expect_record_error(nul, "is not a text file (a NUL byte at offset 2)");
+  const fs::path latin = write_temp("latin.txt", "1.0 2.0\n3.0 \xe9\xe8\n");
+  expect_record_error(latin, "\"\\xE9\\xE8\" is not a number");
+  const fs::path control =
+      write_temp("control.txt", std::string(100, '\x01') + "\n1 2\n");
+  expect_record_error(control, "control bytes");
+  const fs::path longtoken =
+      write_temp("long.txt", "1 2\n2 " + std::string(500, 'x') + "\n");
+  try
+  {
+    read_record(longtoken, Units::g);
+    ADD_FAILURE() << "no RecordError";
+  }
+  catch (const RecordError& e)
+  {
+    EXPECT_LT(std::string(e.what()).size(), 300u) << e.what();
+  }
+  for (const auto& p : {nul, latin, control, longtoken})
+    fs::remove(p);
+}
+
 TEST(RecordErrors, MoreValuesThanNpts)
 {
   const fs::path p =

@@ -57,6 +57,7 @@ expect unknown_option 'bogus' --bogus
 expect unknown_concrete_model 'koyna\.toml.*material\.model' --set material.model=damage
 expect tensile_above_half_fc 'koyna\.toml.*concrete\.ft' --set material.model=plastic --set concrete.ft=20e6
 expect negative_fracture_energy 'koyna\.toml.*concrete\.Gf' --set concrete.Gf=-1
+expect mesh_too_fine 'koyna\.toml.*mesh\.size.*estimated.*mesh\.max_cells' --set mesh.size=1e-6
 
 if [ "$failures" -ne 0 ]; then
   echo "$failures bad-input checks failed"; exit 1

@@ -1,6 +1,6 @@
 #include "checkpoint.h"
-#include <damseis/case/case.h>
 #include <cstring>
+#include <damseis/case/case.h>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -119,8 +119,8 @@ std::optional<CheckpointData> read_checkpoint(MPI_Comm comm,
   if (!all_ok)
   {
     throw input::InputError("the checkpoint in " + dir.string() +
-                             " does not match this model (mesh, order or "
-                             "partition changed); remove it to start over");
+                            " does not match this model (mesh, order or "
+                            "partition changed); remove it to start over");
   }
   const auto n = get<std::int64_t>(in);
   for (std::int64_t i = 0; i < n; ++i)

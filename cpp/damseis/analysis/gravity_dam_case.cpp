@@ -1,4 +1,5 @@
 #include "gravity_dam_case.h"
+#include <damseis/geometry/mesh_estimate.h>
 #include <damseis/geometry/tags.h>
 
 namespace damseis::analysis
@@ -30,6 +31,11 @@ input::Schema gravity_dam_schema()
   s.real("mesh.size", "2.0", "m", "element size in the dam").above(0);
   s.integer("mesh.order", "2", "-", "displacement polynomial degree (1 or 2)")
       .between(1, 2);
+  s.integer("mesh.max_cells", "1000000", "-",
+            "refuse a mesh estimated above this many cells before meshing "
+            "(raise it if the machine has the memory: about 4 GB per "
+            "million P2 cells)")
+      .at_least(1);
   // Materials.
   s.real("material.E", "30e9", "Pa", "Young's modulus of the dam concrete")
       .above(0);
@@ -129,6 +135,7 @@ GravityDamConfig read_gravity_dam_config(const input::Case& c)
     c.fail("foundation.width", "is narrower than the dam base",
            "a width larger than toe_x - heel_x");
   }
+  geometry::check_cell_estimate(c, geometry::estimated_cells(s));
 
   g.seismic = read_seismic_settings(c, gravity_dam_directions(), 2, s.crest_y,
                                     {s.heel_x, s.crest_y, 0.0},

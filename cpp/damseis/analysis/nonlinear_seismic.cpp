@@ -539,20 +539,21 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
       // larger than the snap-back limit.
       {"crack_band_exact",
        fe.degree() == 1 && cm.cells_with_reduced_strength() == 0}};
-  summary["max_kappa_t"] = {
-      {"value", kt_max.value}, {"x", kt_max.x[0]}, {"y", kt_max.x[1]}};
+  summary["max_kappa_t"] = {{"value", kt_max.value},
+                            {"x", coordinate(kt_max.x[0])},
+                            {"y", coordinate(kt_max.x[1])}};
   summary["max_strain_rate_per_s"] = {{"value", rate_max.value},
-                                      {"x", rate_max.x[0]},
-                                      {"y", rate_max.x[1]},
-                                      {"t", rate_max.t}};
+                                      {"x", coordinate(rate_max.x[0])},
+                                      {"y", coordinate(rate_max.x[1])},
+                                      {"t", instant(rate_max.t)}};
   summary["max_vertical_stress_mpa"] = {{"value", 1e-6 * syy_hi.value},
-                                        {"x", syy_hi.x[0]},
-                                        {"y", syy_hi.x[1]},
-                                        {"t", syy_hi.t}};
+                                        {"x", coordinate(syy_hi.x[0])},
+                                        {"y", coordinate(syy_hi.x[1])},
+                                        {"t", instant(syy_hi.t)}};
   summary["min_vertical_stress_mpa"] = {{"value", -1e-6 * syy_lo.value},
-                                        {"x", syy_lo.x[0]},
-                                        {"y", syy_lo.x[1]},
-                                        {"t", syy_lo.t}};
+                                        {"x", coordinate(syy_lo.x[0])},
+                                        {"y", coordinate(syy_lo.x[1])},
+                                        {"t", instant(syy_lo.t)}};
   summary["static_stage"] = static_stage.to_json();
   summary["newton"] = {
       {"rtol", concrete.newton.rtol},

@@ -65,12 +65,24 @@ void set_owned_values(Vec x, const std::vector<double>& v)
   VecRestoreArray(x, &a);
 }
 
+double coordinate(double x)
+{
+  return std::round(x * 1e6) / 1e6 + 0.0;
+}
+
+double instant(double t)
+{
+  return std::round(t * 1e9) / 1e9 + 0.0;
+}
+
 json extreme_json(const results::Extreme& e, int dim)
 {
-  json j = {{"value", e.value * 1e-6}, {"x", e.x[0]}, {"y", e.x[1]}};
+  json j = {{"value", e.value * 1e-6},
+            {"x", coordinate(e.x[0])},
+            {"y", coordinate(e.x[1])}};
   if (dim == 3)
-    j["z"] = e.x[2];
-  j["t"] = e.t;
+    j["z"] = coordinate(e.x[2]);
+  j["t"] = instant(e.t);
   return j;
 }
 
@@ -359,11 +371,12 @@ json write_crest_history(MPI_Comm comm, const std::vector<double>& hist,
   for (int i = 0; i < dim; ++i)
   {
     by_component[std::string(1, axis[i])] = {{"value", peak[i]},
-                                             {"t", peak_t[i]}};
+                                             {"t", instant(peak_t[i])}};
     statics.push_back(rel_static[i]);
   }
   return {{"crest_static_m", statics},
-          {"crest_displacement_max_m", {{"value", peak_h}, {"t", peak_h_t}}},
+          {"crest_displacement_max_m",
+           {{"value", peak_h}, {"t", instant(peak_h_t)}}},
           {"crest_displacement_max_by_component_m", by_component}};
 }
 
@@ -420,7 +433,13 @@ json seismic_summary(MPI_Comm comm, const fem::ElasticModel& fe,
         {"b_stiffness", modal.damping.b_stiffness}}},
       {"stress", s.stress_total ? "total" : "seismic"},
       {"crest_point",
-       std::vector<double>(crest_node.begin(), crest_node.begin() + dim)},
+       [&]
+       {
+         std::vector<double> x;
+         for (int i = 0; i < dim; ++i)
+           x.push_back(coordinate(crest_node[i]));
+         return x;
+       }()},
       {"max_principal_tension_mpa",
        extreme_json(envelope.max_tension(comm), dim)},
       {"max_principal_compression_mpa",

@@ -25,6 +25,12 @@ void to_function(Vec x, dolfinx::fem::Function<double>& u);
 std::vector<double> owned_values(Vec x);
 void set_owned_values(Vec x, const std::vector<double>& v);
 
+/// A coordinate [m] rounded to the micrometre (no round-off noise such as
+/// -2.9e-17 or 103.00000000000001 in summaries), and a time [s] to the
+/// nanosecond.
+double coordinate(double x);
+double instant(double t);
+
 /// {"value" [MPa], "x", "y"(, "z"), "t"} of an extreme stress.
 nlohmann::json extreme_json(const results::Extreme& e, int dim);
 /// Local cells (owned and ghost) of a region tag.

@@ -1,6 +1,7 @@
 #include "seismic_settings.h"
 #include <cmath>
 #include <damseis/motion/record.h>
+#include <damseis/results/progress.h>
 #include <sstream>
 
 namespace damseis::analysis
@@ -133,6 +134,14 @@ GroundMotion read_motion(const input::Case& c, const std::string& p, double dt,
     gm.peak_g = r.peak() / motion::standard_gravity;
   gm.acceleration =
       motion::resample(r, dt, duration < 0 ? r.duration() : duration);
+  if (duration > r.duration())
+  {
+    std::ostringstream w;
+    w << p << ".record " << file.filename().string() << " lasts "
+      << r.duration() << " s, time.duration is " << duration
+      << " s: the ground acceleration is zero after " << r.duration() << " s";
+    results::warn(MPI_COMM_WORLD, w.str());
+  }
   return gm;
 }
 
@@ -221,6 +230,19 @@ SeismicSettings read_seismic_settings(const input::Case& c,
   std::size_t samples = 0;
   for (const GroundMotion& m : g.motion)
     samples = std::max(samples, m.acceleration.size());
+  for (const Direction& d : directions)
+  {
+    const GroundMotion& m = g.motion[d.component];
+    if (duration == 0.0 && m.active && m.acceleration.size() < samples)
+    {
+      results::warn(
+          MPI_COMM_WORLD,
+          "motion." + d.name +
+              ".record is shorter than the "
+              "longest record: its acceleration is zero after " +
+              std::to_string((m.acceleration.size() - 1) * g.scheme.dt) + " s");
+    }
+  }
   if (samples < 2)
     c.fail("time.duration", "is shorter than one step", "duration >= time.dt");
   g.steps = static_cast<int>(samples) - 1;

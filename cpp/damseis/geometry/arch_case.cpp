@@ -1,5 +1,6 @@
 // Case-file keys of the arch-dam geometry.
 #include "arch_case.h"
+#include "mesh_estimate.h"
 
 #include <stdexcept>
 #include <string>
@@ -107,6 +108,11 @@ void arch_dam_schema(input::Schema& s)
             "spline points per face of a lofted section")
       .between(5, 400);
   s.boolean("mesh.optimize", "true", "-", "gmsh tetrahedron optimisation");
+  s.integer("mesh.max_cells", "200000", "-",
+            "refuse a mesh estimated above this many cells before meshing "
+            "(raise it if the machine has the memory: about 15 GB per "
+            "100,000 P2 tetrahedra)")
+      .at_least(1);
   s.boolean("mesh.split_joints", "true", "-",
             "duplicate the joint nodes (false: jointless mesh, same cells)");
 }
@@ -180,6 +186,7 @@ ArchDamDefinition read_arch_dam(const input::Case& c)
            "a realisable arch dam (see the comments of the presets in "
            "demos/arch_dam/presets)");
   }
+  check_cell_estimate(c, estimated_cells(d));
   return d;
 }
 } // namespace damseis::geometry

@@ -7,6 +7,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <string_view>
@@ -35,15 +36,58 @@ std::string fmt(double x)
 }
 
 /// Quotes (and shortens) a piece of file content for an error message.
+/// A safe excerpt for an error message: at most 40 bytes, other than
+/// printable ASCII as \xNN.
 std::string quote(std::string_view text)
 {
-  constexpr std::size_t max_length = 60;
+  constexpr std::size_t max_length = 40;
   std::string quoted = "\"";
-  quoted.append(text.substr(0, max_length));
+  for (std::size_t i = 0; i < text.size() && i < max_length; ++i)
+  {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c >= 0x20 && c < 0x7f && c != '"' && c != '\\')
+      quoted.push_back(static_cast<char>(c));
+    else
+    {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "\\x%02X", c);
+      quoted.append(hex);
+    }
+  }
   if (text.size() > max_length)
     quoted.append("...");
   quoted.push_back('"');
   return quoted;
+}
+
+/// Refuses a file that is not text (a NUL byte, or many bytes that are
+/// neither printable nor whitespace, in its first 4 KiB).
+void require_text(const std::filesystem::path& file)
+{
+  std::ifstream in(file, std::ios::binary);
+  char buffer[4096];
+  in.read(buffer, sizeof buffer);
+  const std::streamsize n = in.gcount();
+  std::size_t odd = 0;
+  for (std::streamsize i = 0; i < n; ++i)
+  {
+    const auto c = static_cast<unsigned char>(buffer[i]);
+    if (c == 0)
+    {
+      fail(file, "is not a text file (a NUL byte at offset " +
+                     std::to_string(i) +
+                     "); expected a PEER .at2 file or one/two numeric "
+                     "columns of text");
+    }
+    if (c < 0x20 && c != '\n' && c != '\r' && c != '\t' && c != '\f' &&
+        c != '\v')
+      ++odd;
+  }
+  if (n > 0 && odd * 10 > static_cast<std::size_t>(n))
+    fail(file, "is not a text file (" + std::to_string(odd) +
+                   " control bytes in its first " + std::to_string(n) +
+                   "); expected a PEER .at2 file or one/two numeric columns "
+                   "of text");
 }
 
 /// Removes leading and trailing whitespace.
@@ -397,6 +441,8 @@ Record read_record(const std::filesystem::path& file, Units units,
 {
   if (format == Format::automatic)
     format = has_at2_extension(file) ? Format::at2 : Format::columns;
+  if (std::filesystem::is_regular_file(file))
+    require_text(file);
   Record r = format == Format::at2 ? read_at2(file)
                                    : read_columns(file, dt_for_one_column);
   if (units == Units::g)
