@@ -45,17 +45,13 @@ def plot_crest(out: Path, summary: dict) -> None:
 
 
 def plot_envelopes(out: Path, summary: dict) -> None:
+    # envelopes.h5 holds the dam only (results/xdmf_writer.h layout).
     with h5py.File(out / "envelopes.h5", "r") as f:
-        x = f["Mesh/mesh/geometry"][:]
-        cells = f["Mesh/mesh/topology"][:]
-        vmax = f["Function/max_principal_envelope_vertex/0"][:].ravel() * 1e-6
-        vmin = f["Function/min_principal_envelope_vertex/0"][:].ravel() * 1e-6
-        cmax = f["Function/max_principal_envelope/0"][:].ravel()
-    # Plot the dam only: cells with a finite envelope (the foundation is not
-    # tracked) -- the cell envelope is written for every cell, so use the
-    # vertex values of cells inside the dam region (finite values).
-    keep = np.isfinite(cmax)
-    tri = mtri.Triangulation(x[:, 0], x[:, 1], cells[keep])
+        x = f["mesh/geometry"][:]
+        cells = f["mesh/topology"][:]
+        vmax = f["fields/max_principal_vertex_MPa"][:].ravel()
+        vmin = f["fields/min_principal_vertex_MPa"][:].ravel()
+    tri = mtri.Triangulation(x[:, 0], x[:, 1], cells)
     fig, axes = plt.subplots(1, 2, figsize=(11, 6.5))
     kind = summary.get("stress", "total")
     for ax, values, title, cmap, key in (
@@ -64,18 +60,16 @@ def plot_envelopes(out: Path, summary: dict) -> None:
         (axes[1], vmin, "min principal stress (compression -)", "RdYlBu_r",
          "max_principal_compression_mpa"),
     ):
-        finite = np.where(np.isfinite(values), values, 0.0)
-        cs = ax.tricontourf(tri, finite, levels=20, cmap=cmap)
+        cs = ax.tricontourf(tri, values, levels=20, cmap=cmap)
         fig.colorbar(cs, ax=ax, shrink=0.8, label="MPa")
         e = summary[key]
         ax.plot([e["x"]], [e["y"]], "k*", ms=9)
         ax.annotate(f"{e['value']:.2f} MPa at t = {e['t']:.2f} s",
                     (e["x"], e["y"]), textcoords="offset points",
                     xytext=(8, -14), fontsize=8)
-        used = np.unique(cells[keep])
-        pad = 0.05 * np.ptp(x[used, 1])
-        ax.set_xlim(x[used, 0].min() - pad, x[used, 0].max() + pad)
-        ax.set_ylim(x[used, 1].min() - pad, x[used, 1].max() + pad)
+        pad = 0.05 * np.ptp(x[:, 1])
+        ax.set_xlim(x[:, 0].min() - pad, x[:, 0].max() + pad)
+        ax.set_ylim(x[:, 1].min() - pad, x[:, 1].max() + pad)
         ax.set_aspect("equal")
         ax.set_title(f"Envelope of {title}\n({kind} stress)", fontsize=10)
         ax.set_xlabel("x [m]")

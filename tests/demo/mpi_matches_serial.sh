@@ -6,6 +6,7 @@
 # With a nonlinear concrete (extra --set arguments) the two runs agree to
 # the Newton tolerance instead (TOL argument, e.g. 1e-5: residual 1e-6 of the
 # load).
+# Every output is finite and the XDMF envelopes match too (check_outputs.py).
 # Usage: mpi_matches_serial.sh KOYNA MPIEXEC PYTHON [TOL [--set k=v ...]]
 set -eu
 exe=$1 mpiexec=$2 python=$3
@@ -71,3 +72,8 @@ if "implex_equilibrium_error" in sa:
           f"max {ia['max']:.4e} / {ib['max']:.4e}")
     assert ia["max"] > 0 and idiff < tol
 PY
+# No NaN or infinity in any output (the foundation block is on: the dam
+# envelopes must not leak into it), XDMF files of one grid per step, and the
+# envelope fields of 2 ranks equal serial point by point.
+"$python" "$(dirname "$0")/check_outputs.py" "$work/serial" "$work/mpi" "$tol"
+"$python" "$(dirname "$0")/check_outputs.py" "$work/mpi"

@@ -283,7 +283,7 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
       write_crest_history(comm, hist, dim, n, dt, crest_static, base_static,
                           false, out_dir / "crest.csv");
 
-  results::write_envelopes(fe, envelope, out_dir / "envelopes.xdmf");
+  results::write_envelopes(fe, envelope, dam_cells, out_dir / "envelopes.xdmf");
   if (face_u)
     face_u->write_csv(comm, out_dir / "displacement_envelope.csv");
   const json faces = write_faces(comm, s, envelope, face_pts, dim, out_dir);

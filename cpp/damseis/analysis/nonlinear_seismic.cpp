@@ -340,7 +340,7 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
       fe,
       out_dir / (k0 == 0 ? std::string("fields.xdmf")
                          : "fields_from_step" + std::to_string(k0) + ".xdmf"),
-      Sq, {"kappa_t", "kappa_c", "strain_rate"});
+      Sq, {"kappa_t", "kappa_c", "strain_rate_per_s"});
   dolfinx::fem::Function<double> u_fn(fe.V());
   std::vector<double> s_field(cm.stress().size());
 
@@ -478,11 +478,12 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   std::copy(rate_env.max.begin(), rate_env.max.end(), rate_all.begin());
   std::copy(kt_rate_env.max.begin(), kt_rate_env.max.end(),
             kt_rate_all.begin());
-  results::write_envelopes(fe, envelope, out_dir / "envelopes.xdmf", Sq, false,
+  results::write_envelopes(fe, envelope, region_cells(model, tags::dam),
+                           out_dir / "envelopes.xdmf", Sq, false,
                            {{"kappa_t", cm.kappa_t()},
                             {"kappa_c", cm.kappa_c()},
-                            {"max_strain_rate", rate_all},
-                            {"max_kappa_t_rate", kt_rate_all}});
+                            {"max_strain_rate_per_s", rate_all},
+                            {"max_kappa_t_rate_per_s", kt_rate_all}});
   const json faces = write_faces(comm, s, envelope, face_pts, dim, out_dir);
   face_u.write_csv(comm, out_dir / "displacement_envelope.csv");
   {
@@ -531,14 +532,15 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
       {"material_integration", concrete.implex ? "implex" : "implicit"},
       {"characteristic_length_m", concrete_characteristic_length(concrete)},
       {"cells_with_reduced_tensile_strength", cm.cells_with_reduced_strength()},
-      {"reduced_tensile_strength_mpa",
-       cm.cells_with_reduced_strength() > 0
-           ? json{{"min", ft_low[0] * 1e-6}, {"max", ft_low[1] * 1e-6}}
-           : json(nullptr)},
       // Energy Gf per unit crack area whatever the mesh: P1 cells no
       // larger than the snap-back limit.
       {"crack_band_exact",
        fe.degree() == 1 && cm.cells_with_reduced_strength() == 0}};
+  if (cm.cells_with_reduced_strength() > 0)
+  {
+    summary["concrete"]["reduced_tensile_strength_mpa"] = {
+        {"min", ft_low[0] * 1e-6}, {"max", ft_low[1] * 1e-6}};
+  }
   summary["max_kappa_t"] = {{"value", kt_max.value},
                             {"x", coordinate(kt_max.x[0])},
                             {"y", coordinate(kt_max.x[1])}};

@@ -6,8 +6,8 @@
 #include <damseis/fem/tied_dofs.h>
 #include <damseis/results/gather.h>
 #include <damseis/results/progress.h>
+#include <damseis/results/xdmf_writer.h>
 #include <dolfinx/common/IndexMap.h>
-#include <dolfinx/io/XDMFFile.h>
 #include <dolfinx/mesh/Mesh.h>
 #include <dolfinx/mesh/MeshTags.h>
 #include <fstream>
@@ -240,16 +240,17 @@ void write_modes(fem::ElasticModel& fe, const fem::Modes& modes,
                  const std::filesystem::path& file)
 {
   dolfinx::fem::Function<double> u(fe.V()), u1(fe.output_space("u_vertex"));
-  u1.name = "mode_shape";
-  dolfinx::io::XDMFFile xdmf(fe.mesh()->comm(), file, "w");
-  xdmf.write_mesh(*fe.mesh());
+  results::XdmfWriter xdmf(fe.mesh(), file, false);
   for (std::size_t i = 0; i < modes.shapes.size(); ++i)
   {
     to_function(full(modes.shapes[i]), u);
     u1.interpolate(u);
-    xdmf.write_function(u1, static_cast<double>(i + 1));
+    char name[64];
+    std::snprintf(name, sizeof name, "mode_%02zu_%.4g_Hz", i + 1,
+                  modes.frequencies_hz[i]);
+    xdmf.point_field(name, u1);
   }
-  xdmf.close();
+  xdmf.write();
 }
 
 void write_face_csv(MPI_Comm comm, const results::StressEnvelope& env,
@@ -424,6 +425,9 @@ json seismic_summary(MPI_Comm comm, const fem::ElasticModel& fe,
       {"dt_s", s.scheme.dt},
       {"frequencies_hz", modal.modes.frequencies_hz},
       {"frequencies_dry_hz", modal.dry_hz},
+      {"mode_shapes",
+       "modes.xdmf: one field per mode (mode_01_<f>_Hz), mass-normalised "
+       "(phi^T M phi = 1 kg, M the mass of the modal analysis)"},
       {"added_mass", added_mass},
       {"damping",
        {{"ratio", s.damping_ratio},

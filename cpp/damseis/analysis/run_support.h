@@ -98,7 +98,9 @@ struct ModalResult
 ModalResult
 modal_and_damping(Mat K, Mat M, Mat M_dry, const SeismicSettings& s,
                   const std::function<void(KSP)>& with_K_factors = {});
-/// Writes the mode shapes (P1 vertex displacement) as an XDMF series.
+/// Writes the mode shapes (P1 vertex displacement, mass-normalised) as one
+/// XDMF grid, a vector field per mode named with its number and frequency
+/// (mode_01_2.241_Hz).
 void write_modes(fem::ElasticModel& fe, const fem::Modes& modes,
                  const std::function<Vec(Vec)>& full,
                  const std::filesystem::path& file);

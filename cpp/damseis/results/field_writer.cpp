@@ -5,6 +5,7 @@
 #include <dolfinx/common/IndexMap.h>
 #include <dolfinx/fem/DofMap.h>
 #include <dolfinx/mesh/Mesh.h>
+#include <dolfinx/mesh/MeshTags.h>
 #include <limits>
 
 namespace damseis::results
@@ -18,42 +19,30 @@ std::int32_t owned_cells(const dolfinx::mesh::Mesh& mesh)
   return mesh.topology().index_map(mesh.topology().dim())->size_local();
 }
 
-/// Voigt stress vector (3 or 6 components) -> row-major tensor.
-void to_tensor(const double* s, int tdim, double* t)
+/// Column `j` of a row-major array with `n` columns, times `scale`.
+std::vector<double> column(const std::vector<double>& a, int n, int j,
+                           double scale)
 {
-  if (tdim == 2)
-  {
-    t[0] = s[0];
-    t[1] = t[2] = s[2];
-    t[3] = s[1];
-    return;
-  }
-  t[0] = s[0];
-  t[4] = s[1];
-  t[8] = s[2];
-  t[1] = t[3] = s[3];
-  t[5] = t[7] = s[4];
-  t[2] = t[6] = s[5];
+  std::vector<double> c(a.size() / n);
+  for (std::size_t i = 0; i < c.size(); ++i)
+    c[i] = scale * a[i * n + j];
+  return c;
 }
 } // namespace
 
-std::vector<double> cell_average_tensor(const dolfinx::fem::FunctionSpace& S,
-                                        std::span<const double> s,
-                                        int num_cells, int tdim)
+std::vector<double> cell_average(const dolfinx::fem::FunctionSpace& S,
+                                 std::span<const double> s, int num_cells)
 {
   const int nc = S.dofmap()->index_map_bs();
-  std::vector<double> avg(nc),
-      out(static_cast<std::size_t>(num_cells) * tdim * tdim);
+  std::vector<double> out(static_cast<std::size_t>(num_cells) * nc, 0.0);
   for (int c = 0; c < num_cells; ++c)
   {
     auto dofs = S.dofmap()->cell_dofs(c);
-    std::fill(avg.begin(), avg.end(), 0.0);
     for (std::int32_t d : dofs)
     {
       for (int k = 0; k < nc; ++k)
-        avg[k] += s[d * nc + k] / dofs.size();
+        out[c * nc + k] += s[d * nc + k] / dofs.size();
     }
-    to_tensor(avg.data(), tdim, out.data() + c * tdim * tdim);
   }
   return out;
 }
@@ -70,33 +59,30 @@ std::vector<double> cell_max_scalar(const dolfinx::fem::FunctionSpace& S,
   return out;
 }
 
+std::vector<std::string> stress_component_names(int tdim)
+{
+  if (tdim == 2)
+    return {"sigma_xx_MPa", "sigma_yy_MPa", "sigma_xy_MPa"};
+  return {"sigma_xx_MPa", "sigma_yy_MPa", "sigma_zz_MPa",
+          "sigma_xy_MPa", "sigma_yz_MPa", "sigma_xz_MPa"};
+}
+
 FieldWriter::FieldWriter(
     fem::ElasticModel& model, const std::filesystem::path& file,
     std::shared_ptr<const dolfinx::fem::FunctionSpace> stress_space,
     const std::vector<std::string>& extra)
-    : _model(model), _S(stress_space ? stress_space : model.S())
+    : _model(model), _S(stress_space ? stress_space : model.S()),
+      _file(model.mesh(), file), _extra(extra)
 {
-  auto mesh = model.mesh();
-  _file = std::make_unique<dolfinx::io::XDMFFile>(mesh->comm(), file, "w");
-  _file->write_mesh(*mesh);
   _u = std::make_shared<Function>(model.output_space("u_vertex"));
-  _sig = std::make_shared<Function>(model.output_space("sig_cell"));
-  _pmax = std::make_shared<Function>(model.output_space("s_cell"));
-  _pmin = std::make_shared<Function>(model.output_space("s_cell"));
-  _u->name = "displacement";
-  _sig->name = "stress";
-  _pmax->name = "max_principal_stress";
-  _pmin->name = "min_principal_stress";
-  for (const std::string& name : extra)
+  const auto mesh = model.mesh();
+  _region.assign(owned_cells(*mesh), 0.0);
+  const auto& tags = *model.model().cell_tags;
+  for (std::size_t i = 0; i < tags.indices().size(); ++i)
   {
-    _extra.push_back(std::make_shared<Function>(model.output_space("s_cell")));
-    _extra.back()->name = name;
+    if (tags.indices()[i] < static_cast<std::int32_t>(_region.size()))
+      _region[tags.indices()[i]] = tags.values()[i];
   }
-}
-
-FieldWriter::~FieldWriter()
-{
-  _file->close();
 }
 
 void FieldWriter::write(const Function& u, std::span<const double> s, double t,
@@ -106,47 +92,30 @@ void FieldWriter::write(const Function& u, std::span<const double> s, double t,
   auto mesh = _model.mesh();
   const int tdim = mesh->topology().dim();
   const std::int32_t n = owned_cells(*mesh);
-  const auto& S = *_S;
-  std::vector<double> tensors = cell_average_tensor(S, s, n, tdim);
-  std::span<double> sig = _sig->x()->mutable_array();
-  std::span<double> pmax = _pmax->x()->mutable_array();
-  std::span<double> pmin = _pmin->x()->mutable_array();
-  const auto& tdofs = *_sig->function_space()->dofmap();
-  const auto& sdofs = *_pmax->function_space()->dofmap();
-  const int ts = tdim * tdim;
+  const int nc = tdim == 2 ? 3 : 6;
+  const std::vector<double> avg = cell_average(*_S, s, n);
+  std::vector<double> p1(n), p3(n);
   for (std::int32_t c = 0; c < n; ++c)
   {
-    const double* tc = tensors.data() + c * ts;
-    std::copy_n(tc, ts, sig.data() + tdofs.cell_dofs(c)[0] * ts);
-    std::array<double, 6> v;
-    if (tdim == 2)
-      v = {tc[0], tc[3], tc[1], 0, 0, 0};
-    else
-      v = {tc[0], tc[4], tc[8], tc[1], tc[5], tc[2]};
-    auto [p1, p3] = principal_extremes(v.data(), tdim == 2 ? 3 : 6);
-    pmax[sdofs.cell_dofs(c)[0]] = p1;
-    pmin[sdofs.cell_dofs(c)[0]] = p3;
+    const auto [hi, lo] = principal_extremes(avg.data() + c * nc, nc);
+    p1[c] = 1e-6 * hi;
+    p3[c] = 1e-6 * lo;
   }
+  _file.point_field("displacement_m", *_u);
+  const auto names = stress_component_names(tdim);
+  for (int j = 0; j < nc; ++j)
+    _file.cell_field(names[j], column(avg, nc, j, 1e-6));
+  _file.cell_field("sigma1_MPa", p1);
+  _file.cell_field("sigma3_MPa", p3);
   for (std::size_t i = 0; i < _extra.size() && i < extra.size(); ++i)
-  {
-    const auto cmax = cell_max_scalar(S, extra[i], n);
-    std::span<double> y = _extra[i]->x()->mutable_array();
-    const auto& dm = *_extra[i]->function_space()->dofmap();
-    for (std::int32_t c = 0; c < n; ++c)
-      y[dm.cell_dofs(c)[0]] = cmax[c];
-  }
-  for (auto& f : {_sig, _pmax, _pmin})
-    f->x()->scatter_fwd();
-  for (auto& f : _extra)
-    f->x()->scatter_fwd();
-  for (auto& f : {_u, _sig, _pmax, _pmin})
-    _file->write_function(*f, t);
-  for (auto& f : _extra)
-    _file->write_function(*f, t);
+    _file.cell_field(_extra[i], cell_max_scalar(*_S, extra[i], n));
+  _file.cell_field("region", _region);
+  _file.write(t);
 }
 
 void write_envelopes(
     fem::ElasticModel& model, const StressEnvelope& env,
+    std::span<const std::int32_t> region_cells,
     const std::filesystem::path& file,
     std::shared_ptr<const dolfinx::fem::FunctionSpace> stress_space,
     bool vertex_points, const std::vector<PointScalar>& extra)
@@ -154,35 +123,38 @@ void write_envelopes(
   auto mesh = model.mesh();
   const std::int32_t n = owned_cells(*mesh);
   const auto& S = stress_space ? *stress_space : *model.S();
-  const auto Q = model.output_space("s_cell");
   const auto P1 = model.output_space("s_vertex");
   const double inf = std::numeric_limits<double>::infinity();
 
-  Function cmax(Q), cmin(Q), vmax(P1), vmin(P1);
-  cmax.name = "max_principal_envelope";
-  cmin.name = "min_principal_envelope";
-  vmax.name = "max_principal_envelope_vertex";
-  vmin.name = "min_principal_envelope_vertex";
-  std::span<double> amax = cmax.x()->mutable_array();
-  std::span<double> amin = cmin.x()->mutable_array();
+  // Cells: extremes over their points and when; vertices: extremes over
+  // the points at the vertex (or of the cell, for interior points).
+  std::vector<double> cmax(n, -inf), cmin(n, inf), tmax(n, 0.0), tmin(n, 0.0);
+  Function vmax(P1), vmin(P1);
   std::span<double> bmax = vmax.x()->mutable_array();
   std::span<double> bmin = vmin.x()->mutable_array();
   std::fill(bmax.begin(), bmax.end(), -inf);
   std::fill(bmin.begin(), bmin.end(), inf);
-  auto emax = env.max_principal();
-  auto emin = env.min_principal();
-  for (std::int32_t c = 0; c < n; ++c)
+  const auto emax = env.max_principal(), emin = env.min_principal();
+  const auto et_max = env.max_times(), et_min = env.min_times();
+  for (std::int32_t c : region_cells)
   {
+    if (c >= n)
+      continue;
     auto pts = S.dofmap()->cell_dofs(c);
     auto verts = P1->dofmap()->cell_dofs(c);
-    double cm = -inf, cn = inf;
     for (std::size_t i = 0; i < pts.size(); ++i)
     {
       const double hi = emax[pts[i]], lo = emin[pts[i]];
-      cm = std::max(cm, hi);
-      cn = std::min(cn, lo);
-      // A stress point at a vertex (degree 2) feeds that vertex; a single
-      // cell-centre point (degree 1) feeds all vertices of the cell.
+      if (hi > cmax[c])
+      {
+        cmax[c] = hi;
+        tmax[c] = et_max[pts[i]];
+      }
+      if (lo < cmin[c])
+      {
+        cmin[c] = lo;
+        tmin[c] = et_min[pts[i]];
+      }
       for (std::size_t k = 0; k < verts.size(); ++k)
       {
         if (vertex_points && pts.size() == verts.size() && k != i)
@@ -191,39 +163,30 @@ void write_envelopes(
         bmin[verts[k]] = std::min(bmin[verts[k]], lo);
       }
     }
-    amax[Q->dofmap()->cell_dofs(c)[0]] = cm;
-    amin[Q->dofmap()->cell_dofs(c)[0]] = cn;
   }
   vmax.x()->scatter_rev([](double a, double b) { return std::max(a, b); });
   vmin.x()->scatter_rev([](double a, double b) { return std::min(a, b); });
-  // Points outside the tracked region are written as NaN (blank in
-  // ParaView).
-  for (Function* f : {&cmax, &cmin, &vmax, &vmin})
+  vmax.x()->scatter_fwd();
+  vmin.x()->scatter_fwd();
+  for (double& v : bmax)
+    v *= 1e-6;
+  for (double& v : bmin)
+    v *= 1e-6;
+  for (std::int32_t c = 0; c < n; ++c)
   {
-    for (double& v : f->x()->mutable_array())
-    {
-      if (std::isinf(v))
-        v = std::numeric_limits<double>::quiet_NaN();
-    }
-    f->x()->scatter_fwd();
+    cmax[c] *= 1e-6;
+    cmin[c] *= 1e-6;
   }
-  std::vector<std::unique_ptr<Function>> more;
+
+  XdmfWriter xdmf(mesh, file, region_cells, false);
+  xdmf.cell_field("max_principal_MPa", cmax);
+  xdmf.cell_field("t_max_principal_s", tmax);
+  xdmf.cell_field("min_principal_MPa", cmin);
+  xdmf.cell_field("t_min_principal_s", tmin);
+  xdmf.point_field("max_principal_vertex_MPa", vmax);
+  xdmf.point_field("min_principal_vertex_MPa", vmin);
   for (const PointScalar& e : extra)
-  {
-    more.push_back(std::make_unique<Function>(Q));
-    more.back()->name = e.name;
-    const auto cm = cell_max_scalar(S, e.values, n);
-    std::span<double> y = more.back()->x()->mutable_array();
-    for (std::int32_t c = 0; c < n; ++c)
-      y[Q->dofmap()->cell_dofs(c)[0]] = cm[c];
-    more.back()->x()->scatter_fwd();
-  }
-  dolfinx::io::XDMFFile xdmf(mesh->comm(), file, "w");
-  xdmf.write_mesh(*mesh);
-  for (Function* f : {&cmax, &cmin, &vmax, &vmin})
-    xdmf.write_function(*f, 0.0);
-  for (auto& f : more)
-    xdmf.write_function(*f, 0.0);
-  xdmf.close();
+    xdmf.cell_field(e.name, cell_max_scalar(S, e.values, n));
+  xdmf.write();
 }
 } // namespace damseis::results

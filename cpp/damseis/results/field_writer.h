@@ -1,29 +1,43 @@
-// XDMF/HDF5 output of displacement and stress fields, and of the stress
-// envelopes, readable by ParaView.
+// The XDMF outputs of an analysis (results/xdmf_writer.h): the time series
+// of the fields, the stress envelopes and the mode shapes. Stresses in MPa,
+// names with their units; no NaN anywhere.
 #pragma once
 
 #include "stress_envelope.h"
+#include "xdmf_writer.h"
 #include <damseis/fem/elastic_model.h>
-#include <dolfinx/io/XDMFFile.h>
 #include <filesystem>
 #include <memory>
 
 namespace damseis::results
 {
-/// Cell averages (DG0) of the stress-point values of every local cell:
-/// returns the tensor (tdim x tdim, row-major) per cell.
-std::vector<double> cell_average_tensor(const dolfinx::fem::FunctionSpace& S,
-                                        std::span<const double> s,
-                                        int num_cells, int tdim);
+/// Cell averages of the stress-point values (`ncomp` Voigt components per
+/// point: xx, yy, xy in 2D; xx, yy, zz, xy, yz, xz in 3D) of every local
+/// cell, `ncomp` per cell.
+std::vector<double> cell_average(const dolfinx::fem::FunctionSpace& S,
+                                 std::span<const double> s, int num_cells);
 
 /// Largest value per cell of a scalar held at the points of `S` (one value
 /// per point, owned and ghost).
 std::vector<double> cell_max_scalar(const dolfinx::fem::FunctionSpace& S,
                                     std::span<const double> v, int num_cells);
 
-/// A time series: displacement at the vertices (P1), cell stress tensor,
-/// and the cell's largest and smallest principal stresses; optionally more
-/// point scalars written as their cell maxima.
+/// Names of the Voigt components with their unit: sigma_xx_MPa, ...
+std::vector<std::string> stress_component_names(int tdim);
+
+/// A point scalar (one value per point of the stress space, owned and
+/// ghost) written as its cell maxima; the name carries the unit.
+struct PointScalar
+{
+  std::string name;
+  std::span<const double> values;
+};
+
+/// The time series fields.xdmf: per written step one grid with the
+/// displacement (displacement_m, at the vertices), the cell-average stress
+/// components and principal stresses (sigma_xx_MPa, ..., sigma1_MPa,
+/// sigma3_MPa), the extra point scalars as cell maxima, and the region tag
+/// of each cell (region: 1 dam, 2 foundation; geometry/tags.h).
 class FieldWriter
 {
 public:
@@ -34,8 +48,7 @@ public:
       fem::ElasticModel& model, const std::filesystem::path& file,
       std::shared_ptr<const dolfinx::fem::FunctionSpace> stress_space = nullptr,
       const std::vector<std::string>& extra = {});
-  ~FieldWriter();
-  /// Writes the fields at time t. `s` holds the stress-point values
+  /// Writes the fields at time t. `s` holds the stress-point values [Pa]
   /// (owned and ghost, layout of the stress space); `extra` one span per
   /// extra name (one value per point).
   void write(const dolfinx::fem::Function<double>& u, std::span<const double> s,
@@ -44,29 +57,26 @@ public:
 private:
   fem::ElasticModel& _model;
   std::shared_ptr<const dolfinx::fem::FunctionSpace> _S;
-  std::unique_ptr<dolfinx::io::XDMFFile> _file;
-  std::shared_ptr<dolfinx::fem::Function<double>> _u, _sig, _pmax, _pmin;
-  std::vector<std::shared_ptr<dolfinx::fem::Function<double>>> _extra;
+  XdmfWriter _file;
+  std::shared_ptr<dolfinx::fem::Function<double>> _u;
+  std::vector<std::string> _extra;
+  std::vector<double> _region;
 };
 
-/// A named point scalar (one value per point of the stress space, owned and
-/// ghost) written by write_envelopes as its cell maxima.
-struct PointScalar
-{
-  std::string name;
-  std::span<const double> values;
-};
-
-/// Writes the envelopes as cell fields (largest value over the cell's
-/// points) and vertex fields (largest over the points at the vertex), plus
-/// Values in Pa; NaN outside the envelope's region.
+/// Writes the envelopes over the region of `env` (the dam) as one grid
+/// without time, on the region's cells only: per cell the largest and
+/// smallest principal stress over its points and when they occurred
+/// (max_principal_MPa, t_max_principal_s, min_principal_MPa,
+/// t_min_principal_s), per vertex the extremes over the points at the
+/// vertex (max_principal_vertex_MPa, min_principal_vertex_MPa), and the
+/// `extra` point scalars as cell maxima.
 /// `stress_space`: the space of the envelope's points (default: the
 /// model's S); `vertex_points`: whether its points sit at the cell vertices
 /// in vertex order (the P2 stress points) or inside the cells (quadrature
-/// points: a cell's maximum feeds all its vertices); `extra`: further point
-/// scalars written as cell maxima.
+/// points: a cell's extreme feeds all its vertices).
 void write_envelopes(
     fem::ElasticModel& model, const StressEnvelope& env,
+    std::span<const std::int32_t> region_cells,
     const std::filesystem::path& file,
     std::shared_ptr<const dolfinx::fem::FunctionSpace> stress_space = nullptr,
     bool vertex_points = true, const std::vector<PointScalar>& extra = {});
