@@ -59,16 +59,36 @@ def plot_faces(out: Path, summary: dict) -> None:
                 (("max_principal_mpa", "max principal stress (tension +)"),
                  ("min_principal_mpa", "min principal stress (compression -)"))):
             ax = axes[row, col]
-            cs = ax.tricontourf(tri, d[key], levels=20, cmap="RdYlBu_r")
+            # Colour range without the points near the dam-rock contact
+            # lines (singular: growing with refinement); beyond it the
+            # colour saturates.
+            v = d[key]
+            lo, hi = v.min(), v.max()
+            r = summary.get("away_from_singular_points", {}).get("radius_m")
+            if r is not None and "distance_to_singular_m" in d.dtype.names:
+                away = d["distance_to_singular_m"] >= r
+                if away.any():
+                    lo, hi = v[away].min(), v[away].max()
+            extend = ("both" if v.min() < lo and v.max() > hi else
+                      "min" if v.min() < lo else
+                      "max" if v.max() > hi else "neither")
+            levels = np.linspace(lo, hi, 21) if hi > lo else 20
+            cs = ax.tricontourf(tri, np.clip(v, lo, hi), levels=levels,
+                                cmap="RdYlBu_r", extend=extend)
             fig.colorbar(cs, ax=ax, shrink=0.85, label="MPa")
-            e = summary["faces"][face][
-                "max_principal_tension_mpa" if col == 0
-                else "max_principal_compression_mpa"]
+            kind = ("max_principal_tension_mpa" if col == 0
+                    else "max_principal_compression_mpa")
+            e = summary["faces"][face][kind]
             ex = -e["x"] if face == "downstream" else e["x"]
             ax.plot([ex], [e["z"]], "k*", ms=9)
+            away_e = summary["faces"][face].get(
+                "away_from_singular_points", {}).get(kind)
+            note = ("" if away_e is None else
+                    f"; {away_e['value']:.2f} MPa farther than {r:.3g} m "
+                    "from the rock")
             ax.set_title(f"{face} face: envelope of {title}\n"
-                         f"extreme {e['value']:.2f} MPa at t = {e['t']:.2f} s",
-                         fontsize=9)
+                         f"extreme {e['value']:.2f} MPa at t = {e['t']:.2f} s"
+                         f"{note}", fontsize=9)
             ax.set_aspect("equal")
             ax.set_xlabel("x along the dam axis [m]"
                           + (" (mirrored: seen from downstream)"

@@ -54,24 +54,45 @@ def plot_envelopes(out: Path, summary: dict) -> None:
     tri = mtri.Triangulation(x[:, 0], x[:, 1], cells)
     fig, axes = plt.subplots(1, 2, figsize=(11, 6.5))
     kind = summary.get("stress", "total")
-    for ax, values, title, cmap, key in (
-        (axes[0], vmax, "max principal stress (tension +)", "RdYlBu_r",
-         "max_principal_tension_mpa"),
-        (axes[1], vmin, "min principal stress (compression -)", "RdYlBu_r",
-         "max_principal_compression_mpa"),
+    # Colour ranges without the singular corners (summary.json
+    # away_from_singular_points): their values grow with refinement and
+    # would wash out the section; beyond the range the colour saturates.
+    away = summary.get("away_from_singular_points")
+    for ax, values, title, key, side in (
+        (axes[0], vmax, "max principal stress (tension +)",
+         "max_principal_tension_mpa", "max"),
+        (axes[1], vmin, "min principal stress (compression -)",
+         "max_principal_compression_mpa", "min"),
     ):
-        cs = ax.tricontourf(tri, values, levels=20, cmap=cmap)
+        lo, hi = values.min(), values.max()
+        extend = "neither"
+        if away is not None:
+            a = away[key]["value"]
+            if side == "max" and a < hi:
+                hi, extend = a, "max"
+            if side == "min" and a > lo:
+                lo, extend = a, "min"
+        levels = np.linspace(lo, hi, 21) if hi > lo else 20
+        cs = ax.tricontourf(tri, np.clip(values, lo, hi), levels=levels,
+                            cmap="RdYlBu_r", extend=extend)
         fig.colorbar(cs, ax=ax, shrink=0.8, label="MPa")
         e = summary[key]
         ax.plot([e["x"]], [e["y"]], "k*", ms=9)
-        ax.annotate(f"{e['value']:.2f} MPa at t = {e['t']:.2f} s",
-                    (e["x"], e["y"]), textcoords="offset points",
-                    xytext=(8, -14), fontsize=8)
+        text = f"peak {e['value']:.2f} MPa at t = {e['t']:.2f} s"
+        if away is not None:
+            r = away["radius_m"]
+            for p in away.get("singular_points", []):
+                ax.add_patch(plt.Circle((p[0], p[1]), r, fill=False, ls="--",
+                                        lw=0.8, color="k"))
+            text += (f"\n{away[key]['value']:.2f} MPa farther than "
+                     f"{r:.3g} m from the dashed corners")
+        ax.set_title(f"Envelope of {title}\n({kind} stress)", fontsize=10)
+        ax.text(0.02, -0.16, text, transform=ax.transAxes, fontsize=8,
+                va="top")
         pad = 0.05 * np.ptp(x[:, 1])
         ax.set_xlim(x[:, 0].min() - pad, x[:, 0].max() + pad)
         ax.set_ylim(x[:, 1].min() - pad, x[:, 1].max() + pad)
         ax.set_aspect("equal")
-        ax.set_title(f"Envelope of {title}\n({kind} stress)", fontsize=10)
         ax.set_xlabel("x [m]")
         ax.set_ylabel("y [m]")
     fig.tight_layout()

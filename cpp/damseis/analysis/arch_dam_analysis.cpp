@@ -6,6 +6,7 @@
 #include <damseis/geometry/arch_mesh.h>
 #include <damseis/geometry/tags.h>
 #include <damseis/results/progress.h>
+#include <damseis/results/singular_points.h>
 #include <dolfinx/la/petsc.h>
 
 namespace damseis::analysis
@@ -36,8 +37,16 @@ nlohmann::json run_arch_dam_analysis(MPI_Comm comm, const ArchDamConfig& cfg,
           : fem::tie_prolongation(*fe.V(), *arch.model.facet_tags, joint_tags),
       false);
 
+  // Singular lines: where the faces meet the rock.
+  SeismicSettings seismic = cfg.seismic;
+  const int faces[3] = {tags::upstream_face, tags::upstream_wetted,
+                        tags::downstream_face};
+  seismic.singular_points =
+      results::meeting_points(arch.model, faces, tags::dam_base);
+  seismic.singular_where =
+      "the mesh nodes where the upstream and downstream faces meet the rock";
   nlohmann::json summary =
-      run_linear_seismic(fe, cfg.seismic, out_dir, case_text, tie.mat());
+      run_linear_seismic(fe, seismic, out_dir, case_text, tie.mat());
   summary["analysis"] = "arch dam, linear elastic, massless foundation";
   summary["joints"] = {{"count", arch.joints.size()},
                        {"model", "bonded"},

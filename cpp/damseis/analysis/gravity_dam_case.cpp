@@ -1,6 +1,7 @@
 #include "gravity_dam_case.h"
 #include <damseis/geometry/mesh_estimate.h>
 #include <damseis/geometry/tags.h>
+#include <damseis/results/singular_points.h>
 
 namespace damseis::analysis
 {
@@ -169,6 +170,18 @@ GravityDamConfig read_gravity_dam_config(const input::Case& c)
            "a tailwater below reservoir.level");
   g.seismic.faces = {{"upstream", {tags::upstream_face}},
                      {"downstream", {tags::downstream_face}}};
+  // The section counterclockwise from the heel: heel and toe are singular
+  // (base corners), and so is any re-entrant corner (the neck).
+  const std::vector<results::Point3> polygon = {
+      {s.heel_x, s.base_y, 0.0},
+      {s.toe_x, s.base_y, 0.0},
+      {s.neck_x, s.neck_y, 0.0},
+      {s.crest_down_x, s.crest_y, 0.0},
+      {s.heel_x, s.crest_y, 0.0}};
+  const int base_corners[2] = {0, 1};
+  g.seismic.singular_points = results::reflex_corners(polygon, base_corners);
+  g.seismic.singular_where =
+      "the heel, the toe and the re-entrant corners of the section";
   return g;
 }
 } // namespace damseis::analysis

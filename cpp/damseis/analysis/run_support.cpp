@@ -6,6 +6,7 @@
 #include <damseis/fem/tied_dofs.h>
 #include <damseis/results/gather.h>
 #include <damseis/results/progress.h>
+#include <damseis/results/singular_points.h>
 #include <damseis/results/xdmf_writer.h>
 #include <dolfinx/common/IndexMap.h>
 #include <dolfinx/mesh/Mesh.h>
@@ -255,6 +256,7 @@ void write_modes(fem::ElasticModel& fe, const fem::Modes& modes,
 
 void write_face_csv(MPI_Comm comm, const results::StressEnvelope& env,
                     std::span<const std::int32_t> points,
+                    std::span<const std::array<double, 3>> singular,
                     const std::filesystem::path& file)
 {
   std::vector<double> local;
@@ -264,11 +266,12 @@ void write_face_csv(MPI_Comm comm, const results::StressEnvelope& env,
     local.insert(local.end(),
                  {x[0], x[1], x[2], env.max_principal()[p] * 1e-6,
                   env.max_times()[p], env.min_principal()[p] * 1e-6,
-                  env.min_times()[p]});
+                  env.min_times()[p], results::distance_to(x, singular)});
   }
-  write_rows_csv(
-      comm, local, 7,
-      "x_m,y_m,z_m,max_principal_mpa,t_max_s,min_principal_mpa,t_min_s", file);
+  write_rows_csv(comm, local, 8,
+                 "x_m,y_m,z_m,max_principal_mpa,t_max_s,min_principal_mpa,"
+                 "t_min_s,distance_to_singular_m",
+                 file);
 }
 
 void write_rows_csv(MPI_Comm comm, const std::vector<double>& local,
@@ -381,6 +384,47 @@ json write_crest_history(MPI_Comm comm, const std::vector<double>& hist,
           {"crest_displacement_max_by_component_m", by_component}};
 }
 
+json away_from_singular(MPI_Comm comm, const SeismicSettings& s,
+                        const results::StressEnvelope& env, int dim,
+                        const std::vector<std::int32_t>* subset)
+{
+  std::vector<std::int32_t> pts;
+  for (std::int32_t i : subset ? *subset : env.region_points())
+  {
+    if (results::distance_to(env.point(i), s.singular_points) >=
+        s.singular_radius)
+      pts.push_back(i);
+  }
+  json j = {{"radius_m", s.singular_radius},
+            {"max_principal_tension_mpa",
+             extreme_json(env.max_tension(comm, pts), dim)},
+            {"max_principal_compression_mpa",
+             extreme_json(env.max_compression(comm, pts), dim)}};
+  if (!subset)
+  {
+    j["method"] =
+        "extremes over the stress points farther than radius_m "
+        "(output.singular_radius) from every singular point (" +
+        s.singular_where +
+        "), where the elastic stress is unbounded and grows with mesh "
+        "refinement; the stress at a fixed distance from them converges";
+    json where = json::array();
+    if (s.singular_points.size() <= 20)
+    {
+      for (const auto& p : s.singular_points)
+      {
+        json q = json::array();
+        for (int i = 0; i < dim; ++i)
+          q.push_back(coordinate(p[i]));
+        where.push_back(q);
+      }
+      j["singular_points"] = where;
+    }
+    j["singular_point_count"] = s.singular_points.size();
+  }
+  return j;
+}
+
 json seismic_summary(MPI_Comm comm, const fem::ElasticModel& fe,
                      const SeismicSettings& s, const ModalResult& modal,
                      bool added_mass, const std::array<double, 3>& crest_node,
@@ -448,6 +492,8 @@ json seismic_summary(MPI_Comm comm, const fem::ElasticModel& fe,
        extreme_json(envelope.max_tension(comm), dim)},
       {"max_principal_compression_mpa",
        extreme_json(envelope.max_compression(comm), dim)},
+      {"away_from_singular_points",
+       away_from_singular(comm, s, envelope, dim, nullptr)},
       {"faces", faces},
       {"ground_motion", motion},
       {"solver", solver},
@@ -477,6 +523,16 @@ void print_summary_line(MPI_Comm comm, const json& summary,
               summary["crest_displacement_max_m"]["value"].get<double>() *
               100) +
           " cm" + extra);
+  const auto& away = summary["away_from_singular_points"];
+  std::ostringstream line;
+  line.precision(4);
+  line << "  farther than " << away["radius_m"].get<double>()
+       << " m from the singular points: max tension "
+       << away["max_principal_tension_mpa"]["value"].get<double>()
+       << " MPa, max compression "
+       << away["max_principal_compression_mpa"]["value"].get<double>()
+       << " MPa";
+  results::print(comm, line.str());
 }
 
 json write_faces(MPI_Comm comm, const SeismicSettings& s,
@@ -488,11 +544,15 @@ json write_faces(MPI_Comm comm, const SeismicSettings& s,
   for (std::size_t i = 0; i < s.faces.size(); ++i)
   {
     const std::string& name = s.faces[i].first;
-    write_face_csv(comm, env, pts[i], out_dir / ("face_" + name + ".csv"));
+    write_face_csv(comm, env, pts[i], s.singular_points,
+                   out_dir / ("face_" + name + ".csv"));
+    json away = away_from_singular(comm, s, env, dim, &pts[i]);
+    away.erase("radius_m");
     faces[name] = {{"max_principal_tension_mpa",
                     extreme_json(env.max_tension(comm, pts[i]), dim)},
                    {"max_principal_compression_mpa",
-                    extreme_json(env.max_compression(comm, pts[i]), dim)}};
+                    extreme_json(env.max_compression(comm, pts[i]), dim)},
+                   {"away_from_singular_points", away}};
   }
   return faces;
 }

@@ -119,6 +119,7 @@ void write_rows_csv(MPI_Comm comm, const std::vector<double>& local,
 /// a CSV file on rank 0.
 void write_face_csv(MPI_Comm comm, const results::StressEnvelope& env,
                     std::span<const std::int32_t> points,
+                    std::span<const std::array<double, 3>> singular,
                     const std::filesystem::path& file);
 
 /// Post-processes the crest history (per step: crest then base displacement
@@ -154,6 +155,14 @@ nlohmann::json seismic_summary(MPI_Comm comm, const fem::ElasticModel& fe,
                                const results::StressEnvelope& envelope,
                                const nlohmann::json& faces,
                                const std::string& solver, const RunTimes& t);
+
+/// Mesh-objective extremes (results/singular_points.h): the envelope
+/// extremes over the points of `subset` (nullptr: the region) farther than
+/// s.singular_radius from every singular point, with the radius and (for
+/// the region) the method and the points. Collective.
+nlohmann::json away_from_singular(MPI_Comm comm, const SeismicSettings& s,
+                                  const results::StressEnvelope& env, int dim,
+                                  const std::vector<std::int32_t>* subset);
 
 /// The closing line of a run (rank 0): stress extremes and crest peak of a
 /// summary, then `extra`.

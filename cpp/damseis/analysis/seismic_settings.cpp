@@ -68,6 +68,11 @@ void add_seismic_keys(input::Schema& s,
   s.real_array("output.base_point", base_point, "m",
                "reference point: crest displacement is relative to it "
                "(empty: the base of the crown section)");
+  s.real("output.singular_radius", "0", "m",
+         "radius around the singular points (heel, toe, re-entrant corners; "
+         "in 3D the dam-rock contact lines on the faces) left out of the "
+         "mesh-objective stress extremes (0: 5% of the dam height)")
+      .at_least(0);
   s.boolean("output.plots", "true", "-",
             "write PNG plots (needs python3-matplotlib)");
   s.string("output.overwrite", "clean", "-",
@@ -254,6 +259,9 @@ SeismicSettings read_seismic_settings(const input::Case& c,
   g.crest_point = point(c, "output.crest_point", dim, crest);
   g.base_point = point(c, "output.base_point", dim, base);
   g.plots = c.boolean("output.plots");
+  g.singular_radius = c.real("output.singular_radius");
+  if (g.singular_radius == 0.0)
+    g.singular_radius = 0.05 * crest_elevation;
   g.checkpoint_every = static_cast<int>(c.integer("run.checkpoint_every"));
   g.restart = c.boolean("run.restart");
   g.stop_at_step = static_cast<int>(c.integer("run.stop_at_step"));

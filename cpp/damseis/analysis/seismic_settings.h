@@ -52,6 +52,12 @@ struct SeismicSettings
   std::array<double, 3> base_point = {0, 0, 0};
   /// Faces whose envelope extremes are reported: (name, facet tags).
   std::vector<std::pair<std::string, std::vector<int>>> faces;
+  /// Points where the elastic stress is unbounded (results/
+  /// singular_points.h), what they are, and the radius around them that
+  /// the mesh-objective extremes leave out [m].
+  std::vector<std::array<double, 3>> singular_points;
+  std::string singular_where;
+  double singular_radius = 0.0;
   int checkpoint_every = 0; ///< steps between checkpoints; 0: none
   bool restart = false;     ///< resume from the output folder's checkpoint
   int stop_at_step = 0;     ///< checkpoint and stop there (0: run to the end)

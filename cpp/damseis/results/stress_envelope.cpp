@@ -110,33 +110,41 @@ Extreme global_extreme(MPI_Comm comm, const std::vector<double>& v,
 }
 } // namespace
 
-std::vector<std::int32_t>
-StressEnvelope::candidates(std::span<const std::int32_t> subset) const
+std::vector<std::int32_t> StressEnvelope::region_points() const
 {
   std::vector<std::int32_t> c;
-  if (subset.empty())
+  for (std::size_t i = 0; i < _in_region.size(); ++i)
   {
-    for (std::size_t i = 0; i < _in_region.size(); ++i)
-    {
-      if (_in_region[i])
-        c.push_back(static_cast<std::int32_t>(i));
-    }
+    if (_in_region[i])
+      c.push_back(static_cast<std::int32_t>(i));
   }
-  else
-    c.assign(subset.begin(), subset.end());
   return c;
+}
+
+Extreme StressEnvelope::max_tension(MPI_Comm comm) const
+{
+  return global_extreme(comm, _max, _t_max, _x, region_points(), 1.0);
+}
+
+Extreme StressEnvelope::max_compression(MPI_Comm comm) const
+{
+  return global_extreme(comm, _min, _t_min, _x, region_points(), -1.0);
 }
 
 Extreme StressEnvelope::max_tension(MPI_Comm comm,
                                     std::span<const std::int32_t> subset) const
 {
-  return global_extreme(comm, _max, _t_max, _x, candidates(subset), 1.0);
+  return global_extreme(comm, _max, _t_max, _x,
+                        std::vector<std::int32_t>(subset.begin(), subset.end()),
+                        1.0);
 }
 
 Extreme
 StressEnvelope::max_compression(MPI_Comm comm,
                                 std::span<const std::int32_t> subset) const
 {
-  return global_extreme(comm, _min, _t_min, _x, candidates(subset), -1.0);
+  return global_extreme(comm, _min, _t_min, _x,
+                        std::vector<std::int32_t>(subset.begin(), subset.end()),
+                        -1.0);
 }
 } // namespace damseis::results

@@ -38,13 +38,19 @@ public:
   /// Updates with the owned stress values `s` (layout of S, owned part).
   void update(std::span<const double> s, double t);
 
-  /// Extreme tension (largest max principal) over the region, or over the
-  /// owned points listed in `subset`; collective.
+  /// Extreme tension (largest max principal) over the region; collective.
+  Extreme max_tension(MPI_Comm comm) const;
+  /// Extreme compression (most negative min principal) over the region;
+  /// collective.
+  Extreme max_compression(MPI_Comm comm) const;
+  /// The same over the owned points listed in `subset` (a rank may list
+  /// none); collective.
   Extreme max_tension(MPI_Comm comm,
-                      std::span<const std::int32_t> subset = {}) const;
-  /// Extreme compression (most negative min principal); collective.
+                      std::span<const std::int32_t> subset) const;
   Extreme max_compression(MPI_Comm comm,
-                          std::span<const std::int32_t> subset = {}) const;
+                          std::span<const std::int32_t> subset) const;
+  /// The owned points of the region.
+  std::vector<std::int32_t> region_points() const;
   /// Coordinates of owned point i.
   const std::array<double, 3>& point(std::int32_t i) const { return _x[i]; }
 
@@ -61,9 +67,6 @@ public:
   int components() const { return _ncomp; }
 
 private:
-  std::vector<std::int32_t>
-  candidates(std::span<const std::int32_t> subset) const;
-
   int _ncomp;
   std::vector<double> _max, _min, _t_max, _t_min;
   std::vector<std::array<double, 3>> _x;
