@@ -40,6 +40,7 @@ int run(const input::Case& c, const material::MaterialPointConfig& cfg,
   std::printf("  sigma11 range [%.4g, %.4g] Pa; ft0_eff = %.4g Pa "
               "(l_ch = %.3g m)\n",
               smin, smax, model.derived().ft0, model.derived().l_ch);
+  std::fflush(stdout);
   if (cfg.plots)
   {
     const std::string cmd =

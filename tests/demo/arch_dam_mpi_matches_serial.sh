@@ -59,9 +59,16 @@ st_a, st_b = np.array(sa["crest_static_m"]), np.array(sb["crest_static_m"])
 stdiff = np.abs(st_a - st_b).max() / np.abs(st_a).max()
 pairs = [(sa[k], sb[k]) for k in ("max_principal_tension_mpa",
                                   "max_principal_compression_mpa")]
+extremes = ("max_principal_tension_mpa", "max_principal_compression_mpa")
+for k in extremes:  # mesh-objective extremes too
+    pairs.append((sa["away_from_singular_points"][k],
+                  sb["away_from_singular_points"][k]))
 for face in sa["faces"]:
-    for k in sa["faces"][face]:
-        pairs.append((sa["faces"][face][k], sb["faces"][face][k]))
+    fa, fb = sa["faces"][face], sb["faces"][face]
+    for k in extremes:
+        pairs.append((fa[k], fb[k]))
+        pairs.append((fa["away_from_singular_points"][k],
+                      fb["away_from_singular_points"][k]))
 sdiff = max(abs(x["value"] - y["value"]) / abs(x["value"]) for x, y in pairs)
 print(f"crest history max rel. diff {diff:.2e} (peak {peak:.3e} m), "
       f"frequencies {fdiff:.2e} ({', '.join(f'{f:.4f}' for f in sa['frequencies_hz'])} Hz), "

@@ -190,10 +190,10 @@ MeshArrays build_on_root(const ArchDamGeometry& g, bool verbose)
   // more, which the user must see progressing.
   auto stage = [&](const char* name)
   {
-    std::printf("mesh: %s done at %.1f s\n", name, seconds_since(t0));
+    std::printf("mesh: %s at %.1f s\n", name, seconds_since(t0));
     std::fflush(stdout);
   };
-  stage("gmsh start");
+  stage("gmsh started");
   gmsh::model::add("arch_dam");
 
   // Dam extents in y (inside the canyon)
@@ -237,7 +237,7 @@ MeshArrays build_on_root(const ArchDamGeometry& g, bool verbose)
   // curves is cheap; sampling the lofted faces needs an OCC triangulation)
   gmsh::vectorpair loft;
   occ::addThruSections(wires, loft, -1, true, false, 3);
-  stage("loft");
+  stage("dam lofted");
   gmsh::vectorpair loft_vol;
   for (const auto& dt : loft)
     if (dt.first == 3)
@@ -259,7 +259,7 @@ MeshArrays build_on_root(const ArchDamGeometry& g, bool verbose)
                              std::to_string(dam.size()) +
                              " dam volumes (expected 1 and 1)");
 
-  stage("valley, foundation and dam booleans");
+  stage("valley, foundation and dam booleans done");
   // Cuts the dam blocks with tool surfaces; drops the tool parts outside.
   auto cut_dam = [&](const gmsh::vectorpair& tools)
   {
@@ -304,11 +304,11 @@ MeshArrays build_on_root(const ArchDamGeometry& g, bool verbose)
     cut_dam({{2, occ::addRectangle(e.x0 - 1, e.y0 - 1, wl, e.x1 - e.x0 + 2,
                                    e.y1 - e.y0 + 2)}});
   }
-  stage("joint planes");
+  stage("joint planes cut");
   gmsh::vectorpair out;
   occ::fragment(rock, dam, out, map);
   occ::synchronize();
-  stage("dam-foundation fragment");
+  stage("dam-foundation fragment (OCC) done");
   std::vector<int> rock_vols, dam_vols;
   for (const auto& dt : map[0])
     rock_vols.push_back(dt.second);
@@ -472,7 +472,7 @@ MeshArrays build_on_root(const ArchDamGeometry& g, bool verbose)
   for (std::size_t i = 0; i < node_tags.size(); ++i)
     index.emplace(node_tags[i], std::int64_t(i));
   m.x = xyz;
-  stage("mesh");
+  stage("tetrahedra generated");
   auto collect = [&](int dim, std::vector<std::int64_t>& nodes,
                      std::vector<std::int32_t>& values)
   {
