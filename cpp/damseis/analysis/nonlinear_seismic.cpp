@@ -100,8 +100,7 @@ std::int64_t region_cell_count(MPI_Comm comm, const geometry::Model& model,
 }
 
 /// The snap-back limit of the cell size, E Gf / (s ft^2) [m], s the
-/// snap-back safety factor (1.25)
-/// (material/README.md).
+/// snap-back safety factor (1.25; material/README.md).
 double concrete_characteristic_length(const ConcreteSettings& c)
 {
   const auto& p = c.params;
@@ -179,8 +178,10 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     note.precision(3);
     note << "note: " << cm.cells_with_reduced_strength() << " of "
          << region_cell_count(comm, model, tags::dam)
-         << " dam cells are larger than E Gf / (1.25 ft^2) = "
-         << concrete_characteristic_length(concrete) << " m (snap-back "
+         << " dam cells are larger than E Gf / ("
+         << concrete.params.snap_back_safety
+         << " ft^2) = " << concrete_characteristic_length(concrete)
+         << " m (snap-back "
          << "limit of the softening): their tensile strength is lowered "
          << "from " << concrete.params.ft0 * 1e-6 << " to " << ft_low[0] * 1e-6
          << ".." << ft_low[1] * 1e-6
