@@ -1,6 +1,7 @@
 // Single material point of the rate-dependent HTC concrete model along a
 // prescribed strain/stress path; writes a CSV and its plot
-// (scripts/plot_material_point.py) and the effective case.
+// (scripts/plot_material_point.py) and the effective case. Exit codes: 0
+// done, 1 internal error, 2 bad input, 4 a step that could not be solved.
 //   build/bin/material_point [--case FILE] [--out DIR] [--set key=value ...]
 // With no arguments it runs demos/material_point/material_point.toml.
 #include <cstdio>
@@ -52,9 +53,12 @@ int run(const input::Case& c, const material::MaterialPointConfig& cfg,
   }
   if (!result.completed)
   {
-    std::fprintf(stderr, "material_point: warning: %s\n",
+    // Like the demos' exit code 4: a step that could not be solved (the
+    // points so far are written).
+    std::fprintf(stderr,
+                 "material_point: error: %s; try a smaller path.strain_step\n",
                  result.message.c_str());
-    return 1;
+    return 4;
   }
   return 0;
 }

@@ -22,14 +22,14 @@ input::Schema arch_dam_schema()
             "displacement polynomial degree (2: no shell locking)")
       .between(1, 2);
   s.real("material.E", "28.6e9", "Pa", "Young's modulus of the dam concrete")
-      .above(0);
+      .between(1e8, 2e11);
   s.real("material.nu", "0.2", "-", "Poisson's ratio of the dam concrete")
       .between_exclusive(-1, 0.5);
   s.real("material.rho", "2400", "kg/m3", "mass density of the dam concrete")
-      .above(0);
+      .between(100, 20000);
   s.real("rock.E", "28.6e9", "Pa",
          "Young's modulus of the (massless) foundation rock")
-      .above(0);
+      .between(1e7, 2e11);
   s.real("rock.nu", "0.25", "-", "Poisson's ratio of the foundation rock")
       .between_exclusive(-1, 0.5);
   s.string("joints.model", "bonded", "-",
@@ -57,6 +57,14 @@ ArchDamConfig read_arch_dam_config(const input::Case& c)
   const auto base = shape.face_point(0.0, 0.0, -1);
   a.seismic =
       read_seismic_settings(c, arch_dam_directions(), 3, h, crest, base);
+  const double level = a.geometry.mesh.water_level;
+  const double size = a.geometry.mesh.size;
+  if (level > 0.0 && (level < 0.1 * size || level > h - 0.1 * size))
+    c.fail("reservoir.level",
+           "is within a tenth of mesh.size of the base or of the crest, where "
+           "the mesh cannot follow the water line",
+           "0 (no reservoir) or a level between the base and the crest at "
+           "least mesh.size / 10 from both");
   a.seismic.faces = {{"upstream", {tags::upstream_face, tags::upstream_wetted}},
                      {"downstream", {tags::downstream_face}}};
   return a;

@@ -1,8 +1,10 @@
 #include "checkpoint.h"
+#include <cmath>
 #include <cstring>
 #include <damseis/case/case.h>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <stdexcept>
 
 namespace damseis::analysis
@@ -44,6 +46,29 @@ std::uint64_t fingerprint(std::span<const double> values)
     h *= 1099511628211ull;
   }
   return h;
+}
+
+std::uint64_t case_fingerprint(const std::string& case_text)
+{
+  std::istringstream in(case_text);
+  std::string line, table, kept;
+  while (std::getline(in, line))
+  {
+    if (line.empty() || line[0] == '#')
+      continue;
+    if (line[0] == '[')
+    {
+      table = line;
+      continue;
+    }
+    if (table == "[run]" || table == "[output]" || table == "[solver]")
+      continue;
+    const auto comment = line.find("  # ");
+    kept += table + line.substr(0, comment) + "\n";
+  }
+  kept.resize((kept.size() + 7) / 8 * 8, ' ');
+  return fingerprint(std::span<const double>(
+      reinterpret_cast<const double*>(kept.data()), kept.size() / 8));
 }
 
 void write_checkpoint(MPI_Comm comm, const std::filesystem::path& dir,
@@ -100,7 +125,21 @@ std::optional<CheckpointData> read_checkpoint(MPI_Comm comm,
   std::ifstream meta(dir / "checkpoint.json");
   if (!meta)
     return std::nullopt;
-  const auto info = nlohmann::json::parse(meta);
+  nlohmann::json info;
+  try
+  {
+    info = nlohmann::json::parse(meta);
+    if (!info.at("ranks").is_number_integer() ||
+        !info.at("step").is_number_integer() || info.at("step").get<int>() < 0)
+      throw std::runtime_error("step and ranks are not integers");
+  }
+  catch (const std::exception& e)
+  {
+    throw input::InputError((dir / "checkpoint.json").string() + ": damaged (" +
+                            std::string(e.what()).substr(0, 80) + "); remove " +
+                            dir.string() +
+                            " (or set run.restart = false) to start over");
+  }
   if (info.at("ranks").get<int>() != size)
   {
     throw input::InputError(
@@ -118,24 +157,51 @@ std::optional<CheckpointData> read_checkpoint(MPI_Comm comm,
   MPI_Allreduce(&ok, &all_ok, 1, MPI_INT, MPI_MIN, comm);
   if (!all_ok)
   {
-    throw input::InputError("the checkpoint in " + dir.string() +
-                            " does not match this model (mesh, order or "
-                            "partition changed); remove it to start over");
+    throw input::InputError(
+        "the checkpoint in " + dir.string() +
+        " does not match this run (the mesh, the partition or a case value "
+        "other than run.*, output.* and solver.* changed) or is damaged; "
+        "restart with the case it was written with, or remove it to start "
+        "over");
   }
+  // Sizes read from the file are checked against what is left of it, so a
+  // damaged file cannot ask for a huge allocation.
+  std::error_code ec;
+  const auto file_size = static_cast<std::int64_t>(
+      std::filesystem::file_size(rank_file(dir, rank, data.step), ec));
+  auto left = [&] { return file_size - static_cast<std::int64_t>(in.tellg()); };
   const auto n = get<std::int64_t>(in);
-  for (std::int64_t i = 0; i < n; ++i)
+  bool sizes_ok = in && n >= 0 && n <= 1000;
+  for (std::int64_t i = 0; sizes_ok && i < n; ++i)
   {
-    std::string name(static_cast<std::size_t>(get<std::int64_t>(in)), ' ');
+    const auto length = get<std::int64_t>(in);
+    sizes_ok = in && length >= 0 && length <= left();
+    if (!sizes_ok)
+      break;
+    std::string name(static_cast<std::size_t>(length), ' ');
     in.read(name.data(), static_cast<std::streamsize>(name.size()));
-    std::vector<double> values(static_cast<std::size_t>(get<std::int64_t>(in)));
+    const auto count = get<std::int64_t>(in);
+    sizes_ok = in && count >= 0 &&
+               count <= left() / static_cast<std::int64_t>(sizeof(double));
+    if (!sizes_ok)
+      break;
+    std::vector<double> values(static_cast<std::size_t>(count));
     in.read(reinterpret_cast<char*>(values.data()),
             static_cast<std::streamsize>(values.size() * sizeof(double)));
     data.arrays.emplace(std::move(name), std::move(values));
   }
-  int read_ok = in ? 1 : 0;
+  // Every value finite (a damaged payload must not reach the results).
+  bool finite = sizes_ok;
+  for (const auto& [name, values] : data.arrays)
+  {
+    for (double v : values)
+      finite = finite && std::isfinite(v);
+  }
+  int read_ok = in && finite ? 1 : 0;
   MPI_Allreduce(MPI_IN_PLACE, &read_ok, 1, MPI_INT, MPI_MIN, comm);
   if (!read_ok)
-    throw input::InputError("truncated checkpoint in " + dir.string() +
+    throw input::InputError("truncated or damaged checkpoint in " +
+                            dir.string() +
                             "; remove it (or set run.restart = false) to "
                             "start over");
   return data;

@@ -24,6 +24,12 @@ struct CheckpointData
 /// coordinates), to refuse a checkpoint from another mesh or partition.
 std::uint64_t fingerprint(std::span<const double> values);
 
+/// A fingerprint of the effective case (Case::to_toml text) without what a
+/// restart may change: comments and the [run], [output] and [solver]
+/// tables. A checkpoint of a case with another material, geometry, load or
+/// time step is refused.
+std::uint64_t case_fingerprint(const std::string& case_text);
+
 /// Writes `data` into `dir` (collective): one file per rank, then
 /// `checkpoint.json` on rank 0 once every rank has finished, so a run
 /// stopped while writing leaves the previous checkpoint valid.

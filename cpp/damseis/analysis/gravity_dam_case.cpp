@@ -18,17 +18,24 @@ input::Schema gravity_dam_schema()
 {
   input::Schema s;
   // Geometry (default: the Koyna dam, non-overflow monolith).
+  // Plausibility: the tallest dams are about 300 m high, their bases less
+  // than 1 km long.
   s.real("geometry.heel_x", "0.0", "m",
-         "x of the heel and the vertical upstream face");
-  s.real("geometry.toe_x", "70.0", "m", "x of the toe");
-  s.real("geometry.neck_x", "19.25", "m", "x of the downstream slope change");
+         "x of the heel and the vertical upstream face")
+      .between(-2000, 2000);
+  s.real("geometry.toe_x", "70.0", "m", "x of the toe").between(-2000, 2000);
+  s.real("geometry.neck_x", "19.25", "m", "x of the downstream slope change")
+      .between(-2000, 2000);
   s.real("geometry.neck_y", "66.5", "m",
          "elevation of the downstream slope change")
-      .above(0);
+      .above(0)
+      .at_most(1000);
   s.real("geometry.crest_down_x", "14.8", "m",
-         "x of the downstream crest corner");
+         "x of the downstream crest corner")
+      .between(-2000, 2000);
   s.real("geometry.crest_y", "103.0", "m", "crest elevation (the base is at 0)")
-      .above(0);
+      .above(0)
+      .at_most(1000);
   s.real("mesh.size", "2.0", "m", "element size in the dam").above(0);
   s.integer("mesh.order", "2", "-", "displacement polynomial degree (1 or 2)")
       .between(1, 2);
@@ -39,27 +46,31 @@ input::Schema gravity_dam_schema()
       .at_least(1);
   // Materials.
   s.real("material.E", "30e9", "Pa", "Young's modulus of the dam concrete")
-      .above(0);
+      .between(1e8, 2e11);
   s.real("material.nu", "0.2", "-", "Poisson's ratio of the dam concrete")
       .between_exclusive(-1, 0.5);
   s.real("material.rho", "2500", "kg/m3", "mass density of the dam concrete")
-      .above(0);
+      .between(100, 20000);
   s.string("material.plane", "plane_stress", "-", "2D idealisation",
            {"plane_stress", "plane_strain"});
   s.boolean("foundation.enabled", "false", "-",
             "massless foundation block (else a rigid base)");
   s.real("foundation.width", "300.0", "m",
          "width of the foundation block, centred on the dam base")
-      .above(0);
+      .above(0)
+      .at_most(20000);
   s.real("foundation.depth", "100.0", "m", "depth of the foundation block")
-      .above(0);
+      .above(0)
+      .at_most(10000);
   s.real("foundation.E", "30e9", "Pa", "Young's modulus of the foundation rock")
-      .above(0);
+      .between(1e7, 2e11);
   s.real("foundation.nu", "0.2", "-", "Poisson's ratio of the foundation rock")
       .between_exclusive(-1, 0.5);
   s.real("foundation.mesh_size", "0.0", "m",
-         "element size at the far boundaries (0: 2.5 x mesh.size)")
-      .at_least(0);
+         "element size at the far boundaries (0: 2.5 x mesh.size; else at "
+         "least mesh.size / 10)")
+      .at_least(0)
+      .at_most(10000);
   add_seismic_keys(s, gravity_dam_directions(), "[0.0, 103.0]", "[0.0, 0.0]");
   add_concrete_keys(s);
   s.real("silt.level", "0.0", "m",
@@ -136,12 +147,21 @@ GravityDamConfig read_gravity_dam_config(const input::Case& c)
     c.fail("foundation.width", "is narrower than the dam base",
            "a width larger than toe_x - heel_x");
   }
+  if (s.foundation_mesh_size > 0.0 &&
+      s.foundation_mesh_size < 0.1 * s.mesh_size)
+    c.fail("foundation.mesh_size", "is finer than a tenth of mesh.size",
+           "0 (2.5 x mesh.size) or a size at least mesh.size / 10");
   geometry::check_cell_estimate(c, geometry::estimated_cells(s));
 
   g.seismic = read_seismic_settings(c, gravity_dam_directions(), 2, s.crest_y,
                                     {s.heel_x, s.crest_y, 0.0},
                                     {s.heel_x, s.base_y, 0.0});
   s.water_level = g.seismic.reservoir.level;
+  if (s.water_level > 0.0 && s.water_level < 0.1 * s.mesh_size)
+    c.fail("reservoir.level",
+           "is a film above the base that the mesh cannot "
+           "follow",
+           "0 (no reservoir) or a level of at least mesh.size / 10");
   g.silt.level = c.real("silt.level");
   g.silt.unit_weight = c.real("silt.unit_weight");
   g.silt.friction_angle_deg = c.real("silt.friction_angle");

@@ -172,7 +172,7 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   int k0 = 0;
   const std::filesystem::path ckpt_dir = out_dir / "checkpoint";
   const std::vector<double> coords = fe.V()->tabulate_dof_coordinates(false);
-  const std::uint64_t print = fingerprint(coords);
+  const std::uint64_t print = fingerprint(coords) ^ case_fingerprint(case_text);
   std::optional<CheckpointData> restart;
   if (s.restart)
     restart = read_checkpoint(comm, ckpt_dir, print);
@@ -181,17 +181,23 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     k0 = restart->step;
     Vector u = column_vector(K.mat()), v = column_vector(K.mat()),
            a = column_vector(K.mat());
-    set_owned_values(u.vec(), restart->arrays.at("u"));
-    set_owned_values(v.vec(), restart->arrays.at("v"));
-    set_owned_values(a.vec(), restart->arrays.at("a"));
+    const CheckpointData& d = *restart;
+    restore_collectively(comm, ckpt_dir,
+                         [&]
+                         {
+                           set_owned_values(u.vec(), checkpoint_array(d, "u"));
+                           set_owned_values(v.vec(), checkpoint_array(d, "v"));
+                           set_owned_values(a.vec(), checkpoint_array(d, "a"));
+                           envelope.restore(checkpoint_array(d, "env_max"),
+                                            checkpoint_array(d, "env_t_max"),
+                                            checkpoint_array(d, "env_min"),
+                                            checkpoint_array(d, "env_t_min"));
+                           hist = checkpoint_array(d, "history", hist.size());
+                           if (face_u)
+                             face_u->restore(checkpoint_array(d, "face_u"));
+                         });
     set_load(k0);
     newmark.set_state(u.vec(), v.vec(), a.vec(), f.vec());
-    envelope.restore(
-        restart->arrays.at("env_max"), restart->arrays.at("env_t_max"),
-        restart->arrays.at("env_min"), restart->arrays.at("env_t_min"));
-    hist = restart->arrays.at("history");
-    if (face_u)
-      face_u->restore(restart->arrays.at("face_u"));
     results::print(comm, "restarting from the checkpoint at step " +
                              std::to_string(k0));
   }

@@ -295,7 +295,7 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   int k0 = 0;
   const std::filesystem::path ckpt_dir = out_dir / "checkpoint";
   const std::vector<double> coords = fe.V()->tabulate_dof_coordinates(false);
-  const std::uint64_t print = fingerprint(coords);
+  const std::uint64_t print = fingerprint(coords) ^ case_fingerprint(case_text);
   std::optional<CheckpointData> restart;
   if (s.restart)
     restart = read_checkpoint(comm, ckpt_dir, print);
@@ -304,28 +304,37 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     k0 = restart->step;
     Vector u = column_vector(K.mat()), v = column_vector(K.mat()),
            a = column_vector(K.mat()), fi = column_vector(K.mat());
-    set_owned_values(u.vec(), restart->arrays.at("u"));
-    set_owned_values(v.vec(), restart->arrays.at("v"));
-    set_owned_values(a.vec(), restart->arrays.at("a"));
-    set_owned_values(fi.vec(), restart->arrays.at("f_int"));
-    cm.restore(restart->arrays);
+    const CheckpointData& d = *restart;
+    const std::size_t np = static_cast<std::size_t>(n_pts);
+    restore_collectively(
+        comm, ckpt_dir,
+        [&]
+        {
+          set_owned_values(u.vec(), checkpoint_array(d, "u"));
+          set_owned_values(v.vec(), checkpoint_array(d, "v"));
+          set_owned_values(a.vec(), checkpoint_array(d, "a"));
+          set_owned_values(fi.vec(), checkpoint_array(d, "f_int"));
+          cm.restore(d.arrays);
+          envelope.restore(
+              checkpoint_array(d, "env_max"), checkpoint_array(d, "env_t_max"),
+              checkpoint_array(d, "env_min"), checkpoint_array(d, "env_t_min"));
+          rate_env.max = checkpoint_array(d, "rate_max", np);
+          rate_env.t = checkpoint_array(d, "rate_t", np);
+          kt_rate_env.max = checkpoint_array(d, "kt_rate_max", np);
+          kt_rate_env.t = checkpoint_array(d, "kt_rate_t", np);
+          syy_max.max = checkpoint_array(d, "syy_max", np);
+          syy_max.t = checkpoint_array(d, "syy_t_max", np);
+          syy_min.max = checkpoint_array(d, "syy_min", np);
+          syy_min.t = checkpoint_array(d, "syy_t_min", np);
+          face_u.restore(checkpoint_array(d, "face_u"));
+          hist = checkpoint_array(d, "history", hist.size());
+          stats = checkpoint_array(d, "newton");
+          if (stats.size() > 18)
+            throw std::runtime_error("array newton is too long");
+          stats.resize(18, 0.0);
+        });
     set_load(k0);
     newmark.set_state(u.vec(), v.vec(), a.vec(), f.vec(), fi.vec());
-    envelope.restore(
-        restart->arrays.at("env_max"), restart->arrays.at("env_t_max"),
-        restart->arrays.at("env_min"), restart->arrays.at("env_t_min"));
-    rate_env.max = restart->arrays.at("rate_max");
-    rate_env.t = restart->arrays.at("rate_t");
-    kt_rate_env.max = restart->arrays.at("kt_rate_max");
-    kt_rate_env.t = restart->arrays.at("kt_rate_t");
-    syy_max.max = restart->arrays.at("syy_max");
-    syy_max.t = restart->arrays.at("syy_t_max");
-    syy_min.max = restart->arrays.at("syy_min");
-    syy_min.t = restart->arrays.at("syy_t_min");
-    face_u.restore(restart->arrays.at("face_u"));
-    hist = restart->arrays.at("history");
-    stats = restart->arrays.at("newton");
-    stats.resize(18, 0.0);
     results::print(comm, "restarting from the checkpoint at step " +
                              std::to_string(k0));
   }

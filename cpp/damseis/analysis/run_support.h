@@ -3,6 +3,7 @@
 // analysis and Rayleigh damping, the crest history and the face tables.
 #pragma once
 
+#include "checkpoint.h"
 #include "seismic_settings.h"
 #include <chrono>
 #include <damseis/fem/elastic_model.h>
@@ -30,6 +31,17 @@ void set_owned_values(Vec x, const std::vector<double>& v);
 /// nanosecond.
 double coordinate(double x);
 double instant(double t);
+
+/// The array `name` of a checkpoint with `size` values (0: any size);
+/// std::runtime_error otherwise.
+const std::vector<double>& checkpoint_array(const CheckpointData& data,
+                                            const std::string& name,
+                                            std::size_t size = 0);
+/// Runs `restore` (reading a checkpoint into the run) on every rank; a
+/// failure on any rank (a missing or mis-sized array) becomes
+/// input::InputError on all of them. Collective.
+void restore_collectively(MPI_Comm comm, const std::filesystem::path& dir,
+                          const std::function<void()>& restore);
 
 /// {"value" [MPa], "x", "y"(, "z"), "t"} of an extreme stress.
 nlohmann::json extreme_json(const results::Extreme& e, int dim);

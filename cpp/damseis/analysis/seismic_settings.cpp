@@ -13,11 +13,12 @@ void add_seismic_keys(input::Schema& s,
 {
   s.real("loads.gravity", "9.81", "m/s2",
          "gravitational acceleration for the dead weight")
-      .at_least(0);
+      .between(0, 100);
   s.real("reservoir.level", "0.0", "m",
          "water level (elevation of the free surface; 0: empty)")
       .at_least(0);
-  s.real("reservoir.rho_w", "1000", "kg/m3", "water density").above(0);
+  s.real("reservoir.rho_w", "1000", "kg/m3", "water density")
+      .between(500, 2000);
   s.boolean("reservoir.westergaard", "true", "-",
             "Westergaard added mass on the wetted upstream face");
   s.boolean("reservoir.load_floor", "false", "-",
@@ -33,10 +34,10 @@ void add_seismic_keys(input::Schema& s,
                "two frequencies instead of damping.modes (empty: use the "
                "modes)")
       .above(0);
-  s.real("time.dt", "0.01", "s", "time step").above(0);
+  s.real("time.dt", "0.01", "s", "time step").above(0).at_most(1.0);
   s.real("time.duration", "10.0", "s",
          "analysis duration (0: the longest record's length)")
-      .at_least(0);
+      .between(0, 3600);
   s.real("time.hht_alpha", "0.0", "-",
          "HHT alpha in [-1/3, 0] (0: Newmark average acceleration)")
       .between(-1.0 / 3.0, 0);
@@ -51,12 +52,12 @@ void add_seismic_keys(input::Schema& s,
     s.string(p + ".format", "auto", "-", "record format",
              {"auto", "at2", "columns"});
     s.real(p + ".dt", "0.0", "s", "sample interval of a one-column record")
-        .at_least(0);
+        .between(0, 1.0);
     std::ostringstream peak;
     peak << d.default_peak_g;
     s.real(p + ".peak_g", peak.str(), "g",
            "peak acceleration after scaling (0: unscaled)")
-        .at_least(0);
+        .between(0, 5.0);
   }
   s.integer("output.every", "10", "-", "steps between XDMF field outputs")
       .at_least(1);
@@ -122,6 +123,20 @@ GroundMotion read_motion(const input::Case& c, const std::string& p, double dt,
   // the record sees the same signal), then resampled; duration < 0 means the
   // record's own length.
   gm.peak_g = c.real(p + ".peak_g");
+  // An unscaled record must be a ground acceleration (a record in cm/s2
+  // read as g is not).
+  if (gm.peak_g == 0.0 && r.peak() > 5.0 * motion::standard_gravity)
+  {
+    std::ostringstream problem;
+    problem << file.filename().string() << " peaks at "
+            << r.peak() / motion::standard_gravity
+            << " g, not a ground acceleration";
+    c.fail(p + ".record", problem.str(),
+           "a record in the units of " + p +
+               ".units (g or m/s2) below 5 g, "
+               "or a target " +
+               p + ".peak_g");
+  }
   if (gm.peak_g > 0.0)
   {
     try
@@ -250,6 +265,9 @@ SeismicSettings read_seismic_settings(const input::Case& c,
   }
   if (samples < 2)
     c.fail("time.duration", "is shorter than one step", "duration >= time.dt");
+  if (samples > 10000001)
+    c.fail("time.dt", "gives " + std::to_string(samples - 1) + " steps",
+           "at most 1e7 steps: a larger time.dt or a shorter time.duration");
   g.steps = static_cast<int>(samples) - 1;
   for (GroundMotion& m : g.motion)
     m.acceleration.resize(samples, 0.0);

@@ -876,6 +876,31 @@ Case Case::load(const Schema& schema, const std::filesystem::path& file,
   if (!in)
     throw_input(name + ": cannot read the case file; expected a readable "
                        "TOML file");
+  // Keys nested far deeper than any damseis key (at most 3 levels) would
+  // make the parser (and the document's destructor) recurse until the
+  // stack overflows: refuse them before parsing.
+  {
+    std::istringstream lines(content.str());
+    std::string line;
+    int number = 0;
+    while (std::getline(lines, line))
+    {
+      ++number;
+      const auto start = line.find_first_not_of(" \t");
+      if (start == std::string::npos || line[start] == '#')
+        continue;
+      const auto end =
+          line[start] == '[' ? line.find(']', start) : line.find('=', start);
+      const auto key = line.substr(
+          start, end == std::string::npos ? std::string::npos : end - start);
+      const auto depth = std::count(key.begin(), key.end(), '.');
+      if (depth > 32)
+        throw_input(name + ":" + std::to_string(number) + ": a key nested " +
+                    std::to_string(depth + 1) +
+                    " levels deep; expected damseis keys such as "
+                    "material.E (see --help)");
+    }
+  }
   toml::table document;
   try
   {

@@ -34,8 +34,11 @@ double estimated_cells(const GravityDamSection& s)
   {
     const double far = s.foundation_mesh_size > 0.0 ? s.foundation_mesh_size
                                                     : 2.5 * s.mesh_size;
-    n += triangle_count(s.foundation_width * s.foundation_depth,
-                        (s.mesh_size + 2.0 * far) / 3.0);
+    // Grading from the dam to the far size: mostly the far size; a far
+    // size finer than the dam's rules the whole block.
+    const double mean =
+        far >= s.mesh_size ? (s.mesh_size + 2.0 * far) / 3.0 : far;
+    n += triangle_count(s.foundation_width * s.foundation_depth, mean);
   }
   return n;
 }

@@ -14,7 +14,9 @@ void add_concrete_keys(input::Schema& s, const std::string& pre)
            "viscoplastic (consistency model)",
            {"elastic", "plastic", "viscoplastic"});
   s.real(p + "E", "24e9", "Pa", "Young's modulus (static)").above(0);
-  s.real(p + "nu", "0.17", "-", "Poisson's ratio").between_exclusive(-1, 0.5);
+  s.real(p + "nu", "0.17", "-",
+         "Poisson's ratio (concrete: 0.1..0.3; the model needs nu <= 0.45)")
+      .between(0.0, 0.45);
   s.real(p + "fc0", "30e6", "Pa", "Static uniaxial compressive strength")
       .above(0);
   s.real(p + "ft0", "2.5e6", "Pa", "Static uniaxial tensile strength").above(0);

@@ -3,6 +3,8 @@
 #include <dolfinx/common/IndexMap.h>
 #include <dolfinx/fem/DofMap.h>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace damseis::results
 {
@@ -71,6 +73,13 @@ void StressEnvelope::restore(std::span<const double> max,
                              std::span<const double> min,
                              std::span<const double> t_min)
 {
+  for (std::size_t n : {max.size(), t_max.size(), min.size(), t_min.size()})
+  {
+    if (n != _max.size())
+      throw std::runtime_error("stress envelope of " + std::to_string(n) +
+                               " points, expected " +
+                               std::to_string(_max.size()));
+  }
   std::copy(max.begin(), max.end(), _max.begin());
   std::copy(t_max.begin(), t_max.end(), _t_max.begin());
   std::copy(min.begin(), min.end(), _min.begin());
