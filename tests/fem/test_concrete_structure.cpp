@@ -48,21 +48,37 @@ using damseis::analysis::to_function;
 
 using damseis::analysis::ConcreteSystem;
 
-TEST(ConcreteStructure, NewtonConvergesQuadratically)
+/// The Koyna section of the static Newton checks: 8 m P2 mesh, plane
+/// strain, rigid base, concrete E 30 GPa, nu 0.2, rho 2500.
+const Material section_concrete{30e9, 0.2, 2500};
+damseis::geometry::Model static_section()
 {
   damseis::geometry::GravityDamSection s;
   s.mesh_size = 8.0;
-  const Material concrete{30e9, 0.2, 2500};
-  ElasticModel fe(damseis::geometry::build_gravity_dam(MPI_COMM_WORLD, s), 2,
-                  {{tags::dam, concrete}}, PlaneMode::plane_strain);
-  fe.fix({tags::dam_base});
+  return damseis::geometry::build_gravity_dam(MPI_COMM_WORLD, s);
+}
+
+/// A ductile plastic concrete of that section (fc 10 MPa, ft 1 MPa,
+/// Gf 5000 N/m: the problem stays well posed under load control).
+material::ConcreteParameters ductile_concrete()
+{
   material::ConcreteParameters p;
-  p.E = concrete.E;
-  p.nu = concrete.nu;
+  p.E = section_concrete.E;
+  p.nu = section_concrete.nu;
   p.fc0 = 10e6;
   p.ft0 = 1.0e6;
-  p.Gf = 5000; // ductile: the problem stays well posed under load control
+  p.Gf = 5000;
   p.mode = material::Mode::plastic;
+  return p;
+}
+
+TEST(ConcreteStructure, NewtonConvergesQuadratically)
+{
+  const Material& concrete = section_concrete;
+  ElasticModel fe(static_section(), 2, {{tags::dam, concrete}},
+                  PlaneMode::plane_strain);
+  fe.fix({tags::dam_base});
+  const material::ConcreteParameters p = ductile_concrete();
   ConcreteModel cm(fe, {{tags::dam, p}}, {{tags::dam, concrete}},
                    PlaneMode::plane_strain);
   ConcreteSystem system(cm);
@@ -469,19 +485,11 @@ TEST(ConcreteStructure, ExtrapolatedPredictorKeepsTheSolution)
 // yielded points nearly in number (10%).
 TEST(ConcreteStructure, DynamicRelaxationReachesTheStaticSolution)
 {
-  damseis::geometry::GravityDamSection sec;
-  sec.mesh_size = 8.0;
-  const Material concrete{30e9, 0.2, 2500};
-  ElasticModel fe(damseis::geometry::build_gravity_dam(MPI_COMM_WORLD, sec), 2,
-                  {{tags::dam, concrete}}, PlaneMode::plane_strain);
+  const Material& concrete = section_concrete;
+  ElasticModel fe(static_section(), 2, {{tags::dam, concrete}},
+                  PlaneMode::plane_strain);
   fe.fix({tags::dam_base});
-  material::ConcreteParameters p;
-  p.E = concrete.E;
-  p.nu = concrete.nu;
-  p.fc0 = 10e6;
-  p.ft0 = 1.0e6;
-  p.Gf = 5000;
-  p.mode = material::Mode::plastic;
+  const material::ConcreteParameters p = ductile_concrete();
   PMat K = own(fe.assemble_stiffness());
   PMat M = own(fe.assemble_mass(nullptr));
   PVec Fg = own(fe.assemble_gravity({0.0, -9.81, 0}));

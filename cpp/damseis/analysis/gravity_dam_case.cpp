@@ -192,12 +192,7 @@ GravityDamConfig read_gravity_dam_config(const input::Case& c)
                      {"downstream", {tags::downstream_face}}};
   // The section counterclockwise from the heel: heel and toe are singular
   // (base corners), and so is any re-entrant corner (the neck).
-  const std::vector<results::Point3> polygon = {
-      {s.heel_x, s.base_y, 0.0},
-      {s.toe_x, s.base_y, 0.0},
-      {s.neck_x, s.neck_y, 0.0},
-      {s.crest_down_x, s.crest_y, 0.0},
-      {s.heel_x, s.crest_y, 0.0}};
+  const auto polygon = geometry::section_outline(s);
   const int base_corners[2] = {0, 1};
   g.seismic.singular_points = results::reflex_corners(polygon, base_corners);
   g.seismic.singular_where =

@@ -430,13 +430,9 @@ json away_from_singular(MPI_Comm comm, const SeismicSettings& s,
                         const results::StressEnvelope& env, int dim,
                         const std::vector<std::int32_t>* subset)
 {
-  std::vector<std::int32_t> pts;
-  for (std::int32_t i : subset ? *subset : env.region_points())
-  {
-    if (results::distance_to(env.point(i), s.singular_points) >=
-        s.singular_radius)
-      pts.push_back(i);
-  }
+  const std::vector<std::int32_t> pts =
+      results::points_away_from(env, subset ? *subset : env.region_points(),
+                                s.singular_points, s.singular_radius);
   json j = {{"radius_m", s.singular_radius},
             {"max_principal_tension_mpa",
              extreme_json(env.max_tension(comm, pts), dim)},

@@ -1,6 +1,7 @@
 #include "seismic_settings.h"
 #include <cmath>
 #include <damseis/motion/record.h>
+#include <damseis/results/output_folder.h>
 #include <damseis/results/progress.h>
 #include <sstream>
 
@@ -76,11 +77,7 @@ void add_seismic_keys(input::Schema& s,
       .at_least(0);
   s.boolean("output.plots", "true", "-",
             "write PNG plots (needs python3-matplotlib)");
-  s.string("output.overwrite", "clean", "-",
-           "an earlier run's results in the output folder: clean (delete "
-           "the files that run wrote, listed in .damseis_outputs; nothing "
-           "else), refuse (stop, exit 2) or keep (leave them)",
-           {"clean", "refuse", "keep"});
+  results::add_overwrite_key(s);
   s.integer("run.checkpoint_every", "0", "-",
             "steps between checkpoints (0: none)")
       .at_least(0);

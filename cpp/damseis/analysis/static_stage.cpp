@@ -39,14 +39,7 @@ std::pair<int, double> relax(ConcreteSystem& system, Mat K, Mat M, Vec F_g,
   dynamics::NonlinearNewmark integrator(
       M, K, dynamics::RayleighDamping::from_ratio(1.0, s.f1_hz, s.f2_hz),
       scheme, system, newton, s.factorization);
-  Vector zero(nullptr, false), F(nullptr, false), fint(nullptr, false);
-  for (Vector* x : {&zero, &F, &fint})
-  {
-    Vec v;
-    VecDuplicate(u, &v);
-    VecSet(v, 0.0);
-    *x = Vector(v, false);
-  }
+  Vector zero = column_vector(K), F = column_vector(K), fint = column_vector(K);
   load_at(from, F_g, F_static, F.vec());
   system.internal_force(fint.vec());
   integrator.set_state(u, zero.vec(), zero.vec(), F.vec(), fint.vec());
@@ -98,26 +91,17 @@ StaticStageReport solve_static_stage(ConcreteSystem& system, Mat K, Mat M,
     report.iterations += r.iterations;
     report.cuts += r.cuts;
   };
-  Vector zero(nullptr, false);
-  {
-    Vec z;
-    VecDuplicate(u, &z);
-    VecSet(z, 0.0);
-    zero = Vector(z, false);
-  }
+  Vector zero = column_vector(K);
   VecSet(u, 0.0);
   add(dynamics::solve_static(system, K, zero.vec(), F_g, 1, u, s.newton,
                              s.factorization));
   // Load control up to relax_from (the loads after the dead weight).
+  Vector F_part = column_vector(K);
   Vec F_to = F_static;
-  Vector F_part(nullptr, false);
   if (s.relax_from < 1.0)
   {
-    Vec v;
-    VecDuplicate(u, &v);
-    load_at(s.relax_from, F_g, F_static, v);
-    F_part = Vector(v, false);
-    F_to = v;
+    load_at(s.relax_from, F_g, F_static, F_part.vec());
+    F_to = F_part.vec();
   }
   try
   {
@@ -148,10 +132,11 @@ StaticStageReport solve_static_stage(ConcreteSystem& system, Mat K, Mat M,
   report.relaxation_final_speed = speed;
   // The equilibrium at the full load from the relaxed state (solve_static
   // needs distinct start and end loads).
-  VecCopy(F_static, zero.vec());
+  Vector start = column_vector(K);
+  VecCopy(F_static, start.vec());
   try
   {
-    add(dynamics::solve_static(system, K, zero.vec(), F_static, 1, u, s.newton,
+    add(dynamics::solve_static(system, K, start.vec(), F_static, 1, u, s.newton,
                                s.factorization));
   }
   catch (const dynamics::StepFailure& e)

@@ -224,16 +224,24 @@ void build_and_mesh(const GravityDamSection& s)
 } // namespace
 
 //-----------------------------------------------------------------------------
+std::array<std::array<double, 3>, 5> section_outline(const GravityDamSection& s)
+{
+  return {{{s.heel_x, s.base_y, 0.0},
+           {s.toe_x, s.base_y, 0.0},
+           {s.neck_x, s.neck_y, 0.0},
+           {s.crest_down_x, s.crest_y, 0.0},
+           {s.heel_x, s.crest_y, 0.0}}};
+}
+//-----------------------------------------------------------------------------
 double section_area(const GravityDamSection& s)
 {
   validate_polygon(s);
-  const double px[5] = {s.heel_x, s.toe_x, s.neck_x, s.crest_down_x, s.heel_x};
-  const double py[5] = {s.base_y, s.base_y, s.neck_y, s.crest_y, s.crest_y};
+  const auto p = section_outline(s);
   double twice = 0;
   for (int i = 0; i < 5; ++i)
   {
     const int j = (i + 1) % 5;
-    twice += px[i] * py[j] - px[j] * py[i];
+    twice += p[i][0] * p[j][1] - p[j][0] * p[i][1];
   }
   return 0.5 * twice;
 }

@@ -4,6 +4,7 @@
 
 #include "gmsh_mesh.h"
 
+#include <array>
 #include <mpi.h>
 
 namespace damseis::geometry
@@ -61,6 +62,11 @@ struct GravityDamSection
 /// the base, ...), on all ranks.
 Model build_gravity_dam(MPI_Comm comm, const GravityDamSection& s,
                         bool verbose = false);
+
+/// The dam section polygon counterclockwise from the heel: heel, toe, neck,
+/// downstream crest corner, upstream crest corner (x, y, 0).
+std::array<std::array<double, 3>, 5>
+section_outline(const GravityDamSection& s);
 
 /// @brief Area of the dam section polygon (closed form, shoelace).
 /// @param[in] s The section (the dam polygon is validated).

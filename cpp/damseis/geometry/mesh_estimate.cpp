@@ -20,16 +20,7 @@ double tetrahedron_count(double volume, double h)
 
 double estimated_cells(const GravityDamSection& s)
 {
-  // The section polygon: heel, toe, neck, downstream crest, upstream crest.
-  const double x[5] = {s.heel_x, s.toe_x, s.neck_x, s.crest_down_x, s.heel_x};
-  const double y[5] = {s.base_y, s.base_y, s.neck_y, s.crest_y, s.crest_y};
-  double area = 0.0;
-  for (int i = 0; i < 5; ++i)
-  {
-    const int j = (i + 1) % 5;
-    area += x[i] * y[j] - x[j] * y[i];
-  }
-  double n = triangle_count(0.5 * std::abs(area), s.mesh_size);
+  double n = triangle_count(section_area(s), s.mesh_size);
   if (s.foundation)
   {
     const double far = s.foundation_mesh_size > 0.0 ? s.foundation_mesh_size

@@ -20,7 +20,7 @@ double tetrahedron_count(double volume, double h);
 
 /// Estimated cells of a gravity-dam section (and its foundation block,
 /// whose size grades from mesh_size to foundation_mesh_size: counted with
-/// their mean).
+/// their mean). The section polygon must be valid (section_area).
 double estimated_cells(const GravityDamSection& s);
 /// Estimated cells of an arch dam and its foundation block (within 10% on
 /// the presets; gravity sections with a foundation: up to 1.3 times the

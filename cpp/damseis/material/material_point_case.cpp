@@ -1,6 +1,7 @@
 #include "damseis/material/material_point_case.h"
 
 #include <cmath>
+#include <damseis/results/output_folder.h>
 #include <stdexcept>
 
 namespace damseis::material
@@ -112,11 +113,7 @@ input::Schema material_point_schema()
            "with .png)");
   s.boolean("output.plots", "true", "-",
             "write the PNG plot (needs python3-matplotlib)");
-  s.string("output.overwrite", "clean", "-",
-           "an earlier run's results in the output folder: clean (delete "
-           "the files that run wrote, listed in .damseis_outputs; nothing "
-           "else), refuse (stop, exit 2) or keep (leave them)",
-           {"clean", "refuse", "keep"});
+  results::add_overwrite_key(s);
   return s;
 }
 

@@ -82,6 +82,16 @@ Overwrite parse_overwrite(const std::string& s)
   throw std::invalid_argument("unknown output.overwrite: " + s);
 }
 
+void add_overwrite_key(input::Schema& schema)
+{
+  schema.string("output.overwrite", "clean", "-",
+                "an earlier run's results in the output folder: clean "
+                "(delete the files that run wrote, listed in "
+                ".damseis_outputs; nothing else), refuse (stop, exit 2) or "
+                "keep (leave them)",
+                {"clean", "refuse", "keep"});
+}
+
 void check_output_folder(const fs::path& dir)
 {
   if (dir.empty())

@@ -17,6 +17,11 @@
 #include <string>
 #include <vector>
 
+namespace damseis::input
+{
+class Schema;
+}
+
 namespace damseis::results
 {
 /// What a new run does with an earlier run's files in its folder.
@@ -28,6 +33,9 @@ enum class Overwrite
 };
 /// "clean", "refuse" or "keep" (std::invalid_argument otherwise).
 Overwrite parse_overwrite(const std::string& s);
+
+/// Declares the case key output.overwrite (every demo has it).
+void add_overwrite_key(input::Schema& schema);
 
 /// Throws input::InputError (one line, naming `--out`) if `dir` cannot be a
 /// run's output folder: an empty path, an existing file (or device), a path

@@ -92,12 +92,13 @@ double distance_to(const Point3& x, std::span<const Point3> points)
   return std::sqrt(d2);
 }
 
-std::vector<std::int32_t> points_away_from(const StressEnvelope& env,
-                                           std::span<const Point3> singular,
-                                           double radius)
+std::vector<std::int32_t>
+points_away_from(const StressEnvelope& env,
+                 std::span<const std::int32_t> candidates,
+                 std::span<const Point3> singular, double radius)
 {
   std::vector<std::int32_t> out;
-  for (std::int32_t i : env.region_points())
+  for (std::int32_t i : candidates)
   {
     if (distance_to(env.point(i), singular) >= radius)
       out.push_back(i);

@@ -35,9 +35,10 @@ std::vector<Point3> meeting_points(const geometry::Model& model,
 /// Distance from x to the nearest of `points` (infinity if none).
 double distance_to(const Point3& x, std::span<const Point3> points);
 
-/// The owned points of the envelope's region farther than `radius` from
-/// every singular point.
-std::vector<std::int32_t> points_away_from(const StressEnvelope& env,
-                                           std::span<const Point3> singular,
-                                           double radius);
+/// The points among `candidates` (owned points of the envelope) farther
+/// than `radius` from every singular point.
+std::vector<std::int32_t>
+points_away_from(const StressEnvelope& env,
+                 std::span<const std::int32_t> candidates,
+                 std::span<const Point3> singular, double radius);
 } // namespace damseis::results
