@@ -1,9 +1,6 @@
 #include "checkpoint.h"
-#include <cmath>
-#include <cstring>
 #include <damseis/case/case.h>
 #include <fstream>
-#include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
 
@@ -11,8 +8,6 @@ namespace damseis::analysis
 {
 namespace
 {
-constexpr std::uint64_t magic = 0x74706b6373696d64; // "dmsckpt"
-
 std::filesystem::path rank_file(const std::filesystem::path& dir, int rank,
                                 int step)
 {
@@ -20,56 +15,27 @@ std::filesystem::path rank_file(const std::filesystem::path& dir, int rank,
                 ".bin");
 }
 
-template <typename T>
-void put(std::ofstream& out, const T& v)
+/// The whole file, or nothing if it cannot be read.
+std::optional<std::string> contents(const std::filesystem::path& file)
 {
-  out.write(reinterpret_cast<const char*>(&v), sizeof(T));
+  std::ifstream in(file, std::ios::binary);
+  if (!in)
+    return std::nullopt;
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  if (in.bad())
+    return std::nullopt;
+  return std::move(bytes).str();
 }
 
-template <typename T>
-T get(std::ifstream& in)
+/// The worst status over the ranks (ok < mismatch < damaged).
+checkpoint::RankFile worst(MPI_Comm comm, checkpoint::RankFile mine)
 {
-  T v{};
-  in.read(reinterpret_cast<char*>(&v), sizeof(T));
-  return v;
+  int code = static_cast<int>(mine), all = 0;
+  MPI_Allreduce(&code, &all, 1, MPI_INT, MPI_MAX, comm);
+  return static_cast<checkpoint::RankFile>(all);
 }
 } // namespace
-
-std::uint64_t fingerprint(std::span<const double> values)
-{
-  // FNV-1a over the bytes.
-  std::uint64_t h = 1469598103934665603ull;
-  const auto* bytes = reinterpret_cast<const unsigned char*>(values.data());
-  for (std::size_t i = 0; i < values.size_bytes(); ++i)
-  {
-    h ^= bytes[i];
-    h *= 1099511628211ull;
-  }
-  return h;
-}
-
-std::uint64_t case_fingerprint(const std::string& case_text)
-{
-  std::istringstream in(case_text);
-  std::string line, table, kept;
-  while (std::getline(in, line))
-  {
-    if (line.empty() || line[0] == '#')
-      continue;
-    if (line[0] == '[')
-    {
-      table = line;
-      continue;
-    }
-    if (table == "[run]" || table == "[output]" || table == "[solver]")
-      continue;
-    const auto comment = line.find("  # ");
-    kept += table + line.substr(0, comment) + "\n";
-  }
-  kept.resize((kept.size() + 7) / 8 * 8, ' ');
-  return fingerprint(std::span<const double>(
-      reinterpret_cast<const double*>(kept.data()), kept.size() / 8));
-}
 
 void write_checkpoint(MPI_Comm comm, const std::filesystem::path& dir,
                       const CheckpointData& data, std::uint64_t print)
@@ -79,19 +45,9 @@ void write_checkpoint(MPI_Comm comm, const std::filesystem::path& dir,
   MPI_Comm_size(comm, &size);
   std::filesystem::create_directories(dir);
   {
+    const std::string bytes = checkpoint::encode_rank(data, print);
     std::ofstream out(rank_file(dir, rank, data.step), std::ios::binary);
-    put(out, magic);
-    put(out, print);
-    put(out, static_cast<std::int64_t>(data.step));
-    put(out, static_cast<std::int64_t>(data.arrays.size()));
-    for (const auto& [name, values] : data.arrays)
-    {
-      put(out, static_cast<std::int64_t>(name.size()));
-      out.write(name.data(), static_cast<std::streamsize>(name.size()));
-      put(out, static_cast<std::int64_t>(values.size()));
-      out.write(reinterpret_cast<const char*>(values.data()),
-                static_cast<std::streamsize>(values.size() * sizeof(double)));
-    }
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
     if (!out)
       throw std::runtime_error("cannot write checkpoint in " + dir.string());
   }
@@ -100,11 +56,18 @@ void write_checkpoint(MPI_Comm comm, const std::filesystem::path& dir,
   {
     // Point to the new files, then drop the older ones.
     int previous = -1;
-    if (std::ifstream meta(dir / "checkpoint.json"); meta)
-      previous = nlohmann::json::parse(meta).value("step", -1);
+    if (const auto meta = contents(dir / "checkpoint.json"))
+    {
+      try
+      {
+        previous = checkpoint::decode_meta(*meta, "").step;
+      }
+      catch (const input::InputError&)
+      {
+      }
+    }
     const auto tmp = dir / "checkpoint.json.tmp";
-    std::ofstream(tmp)
-        << nlohmann::json{{"step", data.step}, {"ranks", size}}.dump() << "\n";
+    std::ofstream(tmp) << checkpoint::encode_meta({data.step, size});
     std::filesystem::rename(tmp, dir / "checkpoint.json");
     if (previous >= 0 && previous != data.step)
     {
@@ -122,88 +85,40 @@ std::optional<CheckpointData> read_checkpoint(MPI_Comm comm,
   int rank = 0, size = 1;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);
-  std::ifstream meta(dir / "checkpoint.json");
-  if (!meta)
+  // Every rank reads the same checkpoint.json, so all throw or none.
+  const auto meta_text = contents(dir / "checkpoint.json");
+  if (!meta_text)
     return std::nullopt;
-  nlohmann::json info;
-  try
-  {
-    info = nlohmann::json::parse(meta);
-    if (!info.at("ranks").is_number_integer() ||
-        !info.at("step").is_number_integer() || info.at("step").get<int>() < 0)
-      throw std::runtime_error("step and ranks are not integers");
-  }
-  catch (const std::exception& e)
-  {
-    throw input::InputError((dir / "checkpoint.json").string() + ": damaged (" +
-                            std::string(e.what()).substr(0, 80) + "); remove " +
-                            dir.string() +
-                            " (or set run.restart = false) to start over");
-  }
-  if (info.at("ranks").get<int>() != size)
+  const auto meta =
+      checkpoint::decode_meta(*meta_text, (dir / "checkpoint.json").string());
+  if (meta.ranks != size)
   {
     throw input::InputError(
         "the checkpoint in " + dir.string() + " was written by " +
-        std::to_string(info.at("ranks").get<int>()) +
+        std::to_string(meta.ranks) +
         " MPI ranks; restart with the same number of ranks");
   }
   CheckpointData data;
-  data.step = info.at("step").get<int>();
-  std::ifstream in(rank_file(dir, rank, data.step), std::ios::binary);
-  int ok = in && get<std::uint64_t>(in) == magic &&
-           get<std::uint64_t>(in) == print &&
-           get<std::int64_t>(in) == data.step;
-  int all_ok = 0;
-  MPI_Allreduce(&ok, &all_ok, 1, MPI_INT, MPI_MIN, comm);
-  if (!all_ok)
+  auto status = checkpoint::RankFile::mismatch;
+  if (const auto bytes = contents(rank_file(dir, rank, meta.step)))
+    status = checkpoint::decode_rank(*bytes, print, meta.step, data);
+  switch (worst(comm, status))
   {
+  case checkpoint::RankFile::ok:
+    return data;
+  case checkpoint::RankFile::mismatch:
     throw input::InputError(
         "the checkpoint in " + dir.string() +
         " does not match this run (the mesh, the partition or a case value "
         "other than run.*, output.* and solver.* changed) or is damaged; "
         "restart with the case it was written with, or remove it to start "
         "over");
-  }
-  // Sizes read from the file are checked against what is left of it, so a
-  // damaged file cannot ask for a huge allocation.
-  std::error_code ec;
-  const auto file_size = static_cast<std::int64_t>(
-      std::filesystem::file_size(rank_file(dir, rank, data.step), ec));
-  auto left = [&] { return file_size - static_cast<std::int64_t>(in.tellg()); };
-  const auto n = get<std::int64_t>(in);
-  bool sizes_ok = in && n >= 0 && n <= 1000;
-  for (std::int64_t i = 0; sizes_ok && i < n; ++i)
-  {
-    const auto length = get<std::int64_t>(in);
-    sizes_ok = in && length >= 0 && length <= left();
-    if (!sizes_ok)
-      break;
-    std::string name(static_cast<std::size_t>(length), ' ');
-    in.read(name.data(), static_cast<std::streamsize>(name.size()));
-    const auto count = get<std::int64_t>(in);
-    sizes_ok = in && count >= 0 &&
-               count <= left() / static_cast<std::int64_t>(sizeof(double));
-    if (!sizes_ok)
-      break;
-    std::vector<double> values(static_cast<std::size_t>(count));
-    in.read(reinterpret_cast<char*>(values.data()),
-            static_cast<std::streamsize>(values.size() * sizeof(double)));
-    data.arrays.emplace(std::move(name), std::move(values));
-  }
-  // Every value finite (a damaged payload must not reach the results).
-  bool finite = sizes_ok;
-  for (const auto& [name, values] : data.arrays)
-  {
-    for (double v : values)
-      finite = finite && std::isfinite(v);
-  }
-  int read_ok = in && finite ? 1 : 0;
-  MPI_Allreduce(MPI_IN_PLACE, &read_ok, 1, MPI_INT, MPI_MIN, comm);
-  if (!read_ok)
+  case checkpoint::RankFile::damaged:
+  default:
     throw input::InputError("truncated or damaged checkpoint in " +
                             dir.string() +
                             "; remove it (or set run.restart = false) to "
                             "start over");
-  return data;
+  }
 }
 } // namespace damseis::analysis
