@@ -599,3 +599,23 @@ TEST(CommandLine, WithCaseLoad)
   EXPECT_DOUBLE_EQ(c.real("material.nu"), 0.3);
   EXPECT_DOUBLE_EQ(c.real("material.E"), 31.027e9);
 }
+
+TEST(InputError, IsOnePrintableLineWithLongWordsShortened)
+{
+  const std::string key(5000, 'k');
+  const damseis::input::InputError e("case.toml: unknown key " + key +
+                                     " \nsecond\tline; expected a key");
+  const std::string what = e.what();
+  EXPECT_EQ(what.find('\n'), std::string::npos);
+  EXPECT_EQ(what.find('\t'), std::string::npos);
+  EXPECT_LT(what.size(), 300u) << what;
+  EXPECT_NE(what.find("...(5000 characters)..."), std::string::npos) << what;
+  EXPECT_NE(what.find("; expected a key"), std::string::npos) << what;
+  // A long word of two-byte UTF-8 characters is cut between characters.
+  std::string accents;
+  for (int i = 0; i < 300; ++i)
+    accents += "\xc3\xa9";
+  const std::string cut = damseis::input::InputError(accents).what();
+  EXPECT_EQ(cut.find("\xc3..."), std::string::npos);
+  EXPECT_EQ(cut.rfind("\xa9", 0), std::string::npos);
+}

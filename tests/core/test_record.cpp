@@ -366,3 +366,23 @@ TEST(RecordBaseline, ResidualIsOrthogonal)
   EXPECT_LT(std::abs(s1), 1e-10);
   EXPECT_THROW(remove_baseline(a, dt, 3), std::invalid_argument);
 }
+
+// Found by the fuzzing harness (tests/fuzz): a sampling step that is not a
+// ground motion's (the demo then resampled 1e8 samples and ran out of
+// memory), values that overflow on conversion from g, a path too long for
+// the file system (uncaught filesystem_error).
+TEST(RecordErrors, ImplausibleStepOverflowAndUnusablePath)
+{
+  expect_record_error(write_temp("dt_large.at2",
+                                 "h1\nh2\nh3\nNPTS= 3, DT= 5.0 SEC\n0.1 0.2 "
+                                 "0.3\n"),
+                      "sampling step 5 s");
+  expect_record_error(write_temp("dt_huge.txt", "0 0.1\n1e300 0.2\n"),
+                      "sampling step");
+  expect_record_error(
+      write_temp("overflow.at2",
+                 "h1\nh2\nh3\nNPTS= 3, DT= 0.01 SEC\n0.1 1e308 0.3\n"),
+      "value 2 overflows");
+  const fs::path long_path = fs::temp_directory_path() / std::string(5000, 'x');
+  EXPECT_THROW(read_record(long_path, Units::g), RecordError);
+}

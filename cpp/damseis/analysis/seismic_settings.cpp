@@ -93,6 +93,18 @@ void add_seismic_keys(input::Schema& s,
 
 namespace
 {
+/// Most time steps of an analysis.
+constexpr double max_steps = 1e7;
+
+[[noreturn]] void fail_steps(const input::Case& c, double steps)
+{
+  std::ostringstream problem;
+  problem << "gives " << steps << " steps";
+  c.fail("time.dt", problem.str(),
+         "at most 1e7 steps: a larger time.dt or a shorter time.duration "
+         "(time.duration = 0 runs the whole record)");
+}
+
 GroundMotion read_motion(const input::Case& c, const std::string& p, double dt,
                          double duration)
 {
@@ -149,8 +161,11 @@ GroundMotion read_motion(const input::Case& c, const std::string& p, double dt,
   }
   else
     gm.peak_g = r.peak() / motion::standard_gravity;
-  gm.acceleration =
-      motion::resample(r, dt, duration < 0 ? r.duration() : duration);
+  // The step count is checked before the resampled record is allocated.
+  const double length = duration < 0 ? r.duration() : duration;
+  if (length / dt > max_steps)
+    fail_steps(c, length / dt);
+  gm.acceleration = motion::resample(r, dt, length);
   if (duration > r.duration())
   {
     std::ostringstream w;
@@ -262,9 +277,8 @@ SeismicSettings read_seismic_settings(const input::Case& c,
   }
   if (samples < 2)
     c.fail("time.duration", "is shorter than one step", "duration >= time.dt");
-  if (samples > 10000001)
-    c.fail("time.dt", "gives " + std::to_string(samples - 1) + " steps",
-           "at most 1e7 steps: a larger time.dt or a shorter time.duration");
+  if (samples - 1 > max_steps)
+    fail_steps(c, static_cast<double>(samples - 1));
   g.steps = static_cast<int>(samples) - 1;
   for (GroundMotion& m : g.motion)
     m.acceleration.resize(samples, 0.0);
@@ -286,5 +300,22 @@ SeismicSettings read_seismic_settings(const input::Case& c,
   if (g.factorization == fem::Factorization::automatic && dim == 3)
     g.factorization = fem::Factorization::mumps;
   return g;
+}
+
+void check_output_point(const input::Case& c, const std::string& key,
+                        const std::array<double, 3>& x, int dim,
+                        double distance, double tolerance,
+                        const std::string& model)
+{
+  if (distance <= tolerance)
+    return;
+  std::ostringstream problem;
+  problem << "= [";
+  for (int i = 0; i < dim; ++i)
+    problem << (i ? ", " : "") << x[i];
+  problem << "] is " << distance << " m outside the model";
+  c.fail(key, problem.str(),
+         "a point in " + model +
+             " (within one mesh.size of it), or [] for the default");
 }
 } // namespace damseis::analysis

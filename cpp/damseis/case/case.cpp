@@ -44,7 +44,7 @@ std::string one_line(std::string_view text)
 
 [[noreturn]] void throw_input(const std::string& message)
 {
-  throw InputError(one_line(message));
+  throw InputError(message);
 }
 
 [[noreturn]] void throw_logic(const std::string& message)
@@ -856,6 +856,45 @@ bool is_table_of_keys(const Schema& schema, const std::string& path)
 }
 
 } // namespace
+
+std::string printable_line(std::string_view text)
+{
+  constexpr std::size_t longest = 200, head = 120, tail = 40;
+  const std::string line = one_line(text);
+  std::string out;
+  std::size_t start = 0;
+  while (start < line.size())
+  {
+    const auto space = line.find(' ', start);
+    const auto end = space == std::string::npos ? line.size() : space;
+    const std::string_view word(line.data() + start, end - start);
+    if (word.size() > longest)
+    {
+      // Cut between UTF-8 characters, not inside one.
+      auto continuation = [&](std::size_t i)
+      { return (static_cast<unsigned char>(word[i]) & 0xc0) == 0x80; };
+      std::size_t a = head, b = word.size() - tail;
+      while (a > 0 && continuation(a))
+        --a;
+      while (b < word.size() && continuation(b))
+        ++b;
+      out.append(word.substr(0, a));
+      out += "...(" + std::to_string(word.size()) + " characters)...";
+      out.append(word.substr(b));
+    }
+    else
+      out.append(word);
+    if (end < line.size())
+      out += ' ';
+    start = end + 1;
+  }
+  return out;
+}
+
+InputError::InputError(const std::string& message)
+    : std::runtime_error(printable_line(message))
+{
+}
 
 Case Case::load(const Schema& schema, const std::filesystem::path& file,
                 const std::vector<std::string>& overrides)

@@ -32,6 +32,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -44,8 +45,15 @@ namespace damseis::input
 class InputError : public std::runtime_error
 {
 public:
-  using std::runtime_error::runtime_error;
+  /// The message is made printable_line(message).
+  explicit InputError(const std::string& message);
 };
+
+/// `text` as one printable line: line breaks shown as "\n", other control
+/// characters as spaces, and any word (a run without spaces, e.g. a key or
+/// a path the user typed) longer than 200 characters cut to its first 120
+/// and last 40 around "...(N characters)...".
+std::string printable_line(std::string_view text);
 
 /// Type of the value of a key.
 enum class Type

@@ -441,13 +441,27 @@ Record read_record(const std::filesystem::path& file, Units units,
 {
   if (format == Format::automatic)
     format = has_at2_extension(file) ? Format::at2 : Format::columns;
-  if (std::filesystem::is_regular_file(file))
+  std::error_code ec; // e.g. a name too long for the file system
+  if (std::filesystem::is_regular_file(file, ec))
     require_text(file);
   Record r = format == Format::at2 ? read_at2(file)
                                    : read_columns(file, dt_for_one_column);
+  if (!(r.dt <= max_record_dt))
+    fail(file, "sampling step " + fmt(r.dt) +
+                   " s is not that of a ground-motion record; expected "
+                   "0 < dt <= " +
+                   fmt(max_record_dt) + " s");
   if (units == Units::g)
     for (double& a : r.acceleration)
       a *= standard_gravity;
+  for (std::size_t k = 0; k < r.acceleration.size(); ++k)
+  {
+    if (!std::isfinite(r.acceleration[k]))
+      fail(file, "value " + std::to_string(k + 1) + " overflows (" +
+                     fmt(r.acceleration[k]) +
+                     " m/s2 after conversion to SI); expected accelerations "
+                     "of a ground motion");
+  }
   return r;
 }
 

@@ -38,6 +38,10 @@ enum class Format
 /// Standard gravity used to convert records given in g, m/s2.
 inline constexpr double standard_gravity = 9.80665;
 
+/// Largest sampling step of a record, s (ground motions are sampled at
+/// 0.005 to 0.02 s; a larger step means a misread file or a wrong key).
+inline constexpr double max_record_dt = 1.0;
+
 /// A uniformly sampled acceleration time history; sample k is at t = k*dt.
 struct Record
 {
@@ -85,7 +89,8 @@ Format parse_format(const std::string& name);
 /// @param dt_for_one_column time step (s) for one-column files; ignored
 ///        otherwise
 /// @throws RecordError (message names @p file) if the file cannot be opened
-///         or its content is malformed.
+///         or its content is malformed, its sampling step is above
+///         max_record_dt, or a value overflows when converted to m/s2.
 Record read_record(const std::filesystem::path& file, Units units,
                    Format format = Format::automatic,
                    double dt_for_one_column = 0.0);
