@@ -404,6 +404,40 @@ TEST(ArchGeometry, CylinderAnalytic)
   EXPECT_NEAR(g.crest_length(), 2 * R * std::asin(X / R), 1e-9);
 }
 
+// Output points are refused when far from the model (issue 16, class 11).
+// The cylinder dam of CylinderAnalytic: centre line radius R = 100 about
+// (0, 104) (the crown's upstream face at y = 0, T = 8), walls x = -60, 60,
+// floor z = 0, foundation box 1 H beyond the rims, below the floor and up
+// and downstream. Distances by hand.
+TEST(ArchGeometry, DistanceFromModelCylinder)
+{
+  const double H = 50, X = 60, R = 100, T = 8;
+  ArchDamDefinition d;
+  d.dam.height = H;
+  d.dam.levels = {0, H};
+  d.dam.crown_upstream_y = {0, 0};
+  d.dam.crown_thickness = {T, T};
+  d.dam.abutment_thickness = {T, T};
+  d.dam.shape = ArchShape::circular;
+  d.dam.radius_central = {R, R};
+  d.canyon.shape = CanyonShape::points;
+  d.canyon.z = {0, H};
+  d.canyon.x_left = {-X, -X};
+  d.canyon.x_right = {X, X};
+  const ArchDamGeometry g(d);
+  auto distance = [&](double x, double y, double z) {
+    return damseis::geometry::distance_from_model(g, {x, y, z});
+  };
+  EXPECT_EQ(distance(0, 4, 25), 0.0);            // in the crown
+  EXPECT_EQ(distance(70, 0, 25), 0.0);           // in the right bank
+  EXPECT_EQ(distance(0, 0, -10), 0.0);           // below the floor
+  EXPECT_NEAR(distance(0, -10, 25), 10, 1e-9);   // upstream: 114 - 104
+  EXPECT_NEAR(distance(0, 20, 40), 12, 1e-9);    // downstream: 96 - 84
+  EXPECT_NEAR(distance(0, 40, 25), 25, 1e-9);    // nearer the floor
+  EXPECT_NEAR(distance(0, 0, H + 30), 30, 1e-9); // above the crest
+  EXPECT_NEAR(distance(200, 0, 25), 90, 1e-9);   // beyond the box x = 110
+}
+
 TEST(ArchGeometry, PresetsAndBadInput)
 {
   // Crest lengths: paper 310 m; Xiluodu ~680 m; Xiaowan ~900 m (public)

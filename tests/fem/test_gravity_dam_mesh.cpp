@@ -341,6 +341,29 @@ TEST_F(GravityDamMesh, CellCountsIndependentOfRanks)
   }
 }
 
+// Output points are refused when far from the model (issue 16, class 11).
+// Koyna: heel (0, 0), toe (70, 0), neck (19.25, 66.5), crest corners
+// (14.8, 103), (0, 103); foundation 300 x 100 centred at x = 35. Distances
+// by hand.
+TEST(GravityDamSectionInput, DistanceFromModel)
+{
+  using damseis::geometry::distance_from_model;
+  const GravityDamSection s = koyna(4.0), f = koyna_with_foundation(4.0);
+  EXPECT_EQ(distance_from_model(s, 35, 20), 0.0);
+  EXPECT_EQ(distance_from_model(s, 0, 103), 0.0);
+  EXPECT_EQ(distance_from_model(s, 18, 66.5), 0.0); // left of the neck
+  EXPECT_NEAR(distance_from_model(s, -10, 50), 10, 1e-12);
+  EXPECT_NEAR(distance_from_model(s, 35, -5), 5, 1e-12);
+  EXPECT_EQ(distance_from_model(f, 35, -5), 0.0);
+  EXPECT_NEAR(distance_from_model(f, 200, -50), 15, 1e-12);
+  EXPECT_NEAR(distance_from_model(s, 14.8 + 20.2, 110), std::hypot(20.2, 7),
+              1e-12);
+  // Beside the reflex neck: nearest to the toe-neck face, |e x (p - toe)|
+  // / |e| = |(-50.75)(70) - (66.5)(-30)| / hypot(50.75, 66.5).
+  EXPECT_NEAR(distance_from_model(s, 40, 70), 1557.5 / std::hypot(50.75, 66.5),
+              1e-12);
+}
+
 TEST(GravityDamSectionInput, BadInputThrows)
 {
   using damseis::geometry::build_gravity_dam;

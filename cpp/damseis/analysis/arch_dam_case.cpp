@@ -59,6 +59,13 @@ ArchDamConfig read_arch_dam_config(const input::Case& c)
       read_seismic_settings(c, arch_dam_directions(), 3, h, crest, base);
   const double level = a.geometry.mesh.water_level;
   const double size = a.geometry.mesh.size;
+  for (const auto& [key, x] :
+       {std::pair{"output.crest_point", a.seismic.crest_point},
+        std::pair{"output.base_point", a.seismic.base_point}})
+  {
+    check_output_point(c, key, x, 3, geometry::distance_from_model(shape, x),
+                       size, "the dam or the foundation rock");
+  }
   if (level > 0.0 && (level < 0.1 * size || level > h - 0.1 * size))
     c.fail("reservoir.level",
            "is within a tenth of mesh.size of the base or of the crest, where "

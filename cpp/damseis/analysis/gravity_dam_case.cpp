@@ -156,6 +156,15 @@ GravityDamConfig read_gravity_dam_config(const input::Case& c)
   g.seismic = read_seismic_settings(c, gravity_dam_directions(), 2, s.crest_y,
                                     {s.heel_x, s.crest_y, 0.0},
                                     {s.heel_x, s.base_y, 0.0});
+  for (const auto& [key, x] :
+       {std::pair{"output.crest_point", g.seismic.crest_point},
+        std::pair{"output.base_point", g.seismic.base_point}})
+  {
+    check_output_point(
+        c, key, x, 2, geometry::distance_from_model(s, x[0], x[1]), s.mesh_size,
+        s.foundation ? "the dam section or its foundation block"
+                     : "the dam section");
+  }
   s.water_level = g.seismic.reservoir.level;
   if (s.water_level > 0.0 && s.water_level < 0.1 * s.mesh_size)
     c.fail("reservoir.level",

@@ -81,4 +81,13 @@ SeismicSettings read_seismic_settings(const input::Case& c,
                                       int dim, double crest_elevation,
                                       const std::array<double, 3>& crest,
                                       const std::array<double, 3>& base);
+/// Refuses an output point (key `key`, e.g. "output.crest_point") that is
+/// `distance` m from the model, more than `tolerance` (the mesh size: the
+/// history would be that of some node far from the point asked for).
+/// `model` says what the point should be in, e.g. "the dam section or its
+/// foundation block".
+void check_output_point(const input::Case& c, const std::string& key,
+                        const std::array<double, 3>& x, int dim,
+                        double distance, double tolerance,
+                        const std::string& model);
 } // namespace damseis::analysis

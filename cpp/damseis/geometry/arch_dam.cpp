@@ -678,4 +678,51 @@ void ArchDamGeometry::validate() const
           "must be 0 (automatic) or >= 3");
   require(m.arch_points >= 5, "mesh.arch_points", "must be >= 5");
 }
+//-----------------------------------------------------------------------------
+ModelBox model_box(const ArchDamGeometry& g)
+{
+  const double H = g.height();
+  // Dam extents in y (inside the canyon), sampled on both faces.
+  double ymin = 1e300, ymax = -1e300;
+  for (int i = 0; i <= 40; ++i)
+  {
+    const double z = H * i / 40.0;
+    for (int side : {-1, 1})
+    {
+      const double a = g.face_theta_at_x(z, g.x_left(z), side);
+      const double b = g.face_theta_at_x(z, g.x_right(z), side);
+      for (int k = 0; k <= 40; ++k)
+      {
+        const auto p = g.face_point(z, a + (b - a) * k / 40.0, side);
+        ymin = std::min(ymin, p[1]);
+        ymax = std::max(ymax, p[1]);
+      }
+    }
+  }
+  const FoundationDefinition& f = g.definition().foundation;
+  return {g.x_left(H) - f.beyond * H,
+          g.x_right(H) + f.beyond * H,
+          ymin - f.upstream * H,
+          ymax + f.downstream * H,
+          -f.below * H,
+          H};
+}
+//-----------------------------------------------------------------------------
+double distance_from_model(const ArchDamGeometry& g,
+                           const std::array<double, 3>& p)
+{
+  const auto [x, y, z] = p;
+  const ModelBox b = model_box(g);
+  const double dx = std::max({b.x0 - x, x - b.x1, 0.0});
+  const double dy = std::max({b.y0 - y, y - b.y1, 0.0});
+  const double dz = std::max({b.z0 - z, z - b.z1, 0.0});
+  if (dx > 0 || dy > 0 || dz > 0)
+    return std::sqrt(dx * dx + dy * dy + dz * dz);
+  const double left = x - g.x_left(z), right = g.x_right(z) - x;
+  if (z <= 0 || left <= 0 || right <= 0)
+    return 0.0; // in the rock
+  const auto [off, theta] = g.offset(z, x, y);
+  const double to_dam = std::abs(off) - 0.5 * g.thickness(z, theta);
+  return std::max(0.0, std::min({to_dam, left, right, z}));
+}
 } // namespace damseis::geometry

@@ -237,6 +237,22 @@ private:
   LevelTable _yu, _tc, _ta, _rc, _rl, _phi;
 };
 
+/// The box of the foundation and the valley: x over the valley rims and
+/// `beyond`, y over the dam and `upstream` / `downstream`, z from `below`
+/// the floor to the crest (all multiples of the height, FoundationDefinition).
+struct ModelBox
+{
+  double x0, x1, y0, y1, z0, z1;
+};
+ModelBox model_box(const ArchDamGeometry& g);
+
+/// Distance [m] from p = (x, y, z) to the model (the dam and the rock of
+/// the model box below the valley surface); 0 inside. In the valley (water
+/// or air) it is the distance to the dam body, measured along the normal
+/// of the centre line, or to the nearer wall or the floor if less.
+double distance_from_model(const ArchDamGeometry& g,
+                           const std::array<double, 3>& p);
+
 /// Letter of a joint label index (0 -> 'A').
 inline char joint_label(int index)
 {

@@ -69,12 +69,6 @@ struct MeshArrays
   double geometry_seconds = 0, mesh_seconds = 0;
 };
 
-/// Box of the foundation and the valley.
-struct Extents
-{
-  double x0, x1, y0, y1, z0, z1;
-};
-
 /// Adds an OCC wire through the arch ring at elevation z; returns its tag.
 int add_ring_wire(const ArchDamGeometry& g, double z, double margin, int np,
                   std::vector<int>& face_curves)
@@ -196,31 +190,7 @@ MeshArrays build_on_root(const ArchDamGeometry& g, bool verbose)
   stage("gmsh started");
   gmsh::model::add("arch_dam");
 
-  // Dam extents in y (inside the canyon)
-  double ymin = 1e300, ymax = -1e300;
-  for (int i = 0; i <= 40; ++i)
-  {
-    const double z = H * i / 40.0;
-    for (int side : {-1, 1})
-    {
-      const double a = g.face_theta_at_x(z, g.x_left(z), side);
-      const double b = g.face_theta_at_x(z, g.x_right(z), side);
-      for (int k = 0; k <= 40; ++k)
-      {
-        const auto p = g.face_point(z, a + (b - a) * k / 40.0, side);
-        ymin = std::min(ymin, p[1]);
-        ymax = std::max(ymax, p[1]);
-      }
-    }
-  }
-  const FoundationDefinition& f = def.foundation;
-  Extents e;
-  e.x0 = g.x_left(H) - f.beyond * H;
-  e.x1 = g.x_right(H) + f.beyond * H;
-  e.y0 = ymin - f.upstream * H;
-  e.y1 = ymax + f.downstream * H;
-  e.z0 = -f.below * H;
-  e.z1 = H;
+  const ModelBox e = model_box(g);
 
   // Over-long dam: loft of the rings from below the floor to the crest
   const ArchMeshOptions& mo = def.mesh;

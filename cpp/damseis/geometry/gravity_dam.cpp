@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -231,6 +232,40 @@ std::array<std::array<double, 3>, 5> section_outline(const GravityDamSection& s)
            {s.neck_x, s.neck_y, 0.0},
            {s.crest_down_x, s.crest_y, 0.0},
            {s.heel_x, s.crest_y, 0.0}}};
+}
+//-----------------------------------------------------------------------------
+double distance_from_model(const GravityDamSection& s, double x, double y)
+{
+  // Inside the polygon (not convex: the neck is a reflex corner) by the
+  // crossing number; outside, the distance is the nearest edge's.
+  const auto p = section_outline(s);
+  bool inside = false;
+  double d = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 5; ++i)
+  {
+    const auto& a = p[i];
+    const auto& b = p[(i + 1) % 5];
+    const double ex = b[0] - a[0], ey = b[1] - a[1];
+    const double px = x - a[0], py = y - a[1];
+    if ((a[1] > y) != (b[1] > y) && px < ex * py / ey)
+      inside = !inside;
+    const double t =
+        std::clamp((px * ex + py * ey) / (ex * ex + ey * ey), 0.0, 1.0);
+    d = std::min(d, std::hypot(px - t * ex, py - t * ey));
+  }
+  if (inside)
+    return 0.0;
+  if (s.foundation)
+  {
+    // The block: centred on the base midpoint, below the base.
+    const double mid = 0.5 * (s.heel_x + s.toe_x);
+    const double dx =
+        std::max(std::abs(x - mid) - 0.5 * s.foundation_width, 0.0);
+    const double dy =
+        std::max({y - s.base_y, s.base_y - s.foundation_depth - y, 0.0});
+    d = std::min(d, std::hypot(dx, dy));
+  }
+  return d;
 }
 //-----------------------------------------------------------------------------
 double section_area(const GravityDamSection& s)

@@ -68,6 +68,11 @@ Model build_gravity_dam(MPI_Comm comm, const GravityDamSection& s,
 std::array<std::array<double, 3>, 5>
 section_outline(const GravityDamSection& s);
 
+/// Distance [m] from the point (x, y) to the model (the dam polygon and,
+/// with a foundation, its block); 0 inside or on the boundary. The polygon
+/// must be valid (section_area).
+double distance_from_model(const GravityDamSection& s, double x, double y);
+
 /// @brief Area of the dam section polygon (closed form, shoelace).
 /// @param[in] s The section (the dam polygon is validated).
 /// @return The area [m^2].
