@@ -8,30 +8,8 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
 
-# expect NAME PATTERN ARGS...: exit 2, one stderr line matching PATTERN, no
-# output folder.
-expect() {
-  local name=$1 pattern=$2
-  shift 2
-  local out="$work/out_$name"
-  "$exe" --out "$out" "$@" >"$work/stdout" 2>"$work/stderr"
-  local rc=$?
-  local lines
-  lines=$(wc -l <"$work/stderr")
-  if [ "$rc" -ne 2 ]; then
-    echo "FAIL $name: exit code $rc, expected 2"; failures=$((failures + 1))
-  elif [ "$lines" -ne 1 ]; then
-    echo "FAIL $name: $lines stderr lines, expected 1:"; cat "$work/stderr"
-    failures=$((failures + 1))
-  elif ! grep -Eq -- "$pattern" "$work/stderr"; then
-    echo "FAIL $name: message does not match '$pattern':"; cat "$work/stderr"
-    failures=$((failures + 1))
-  elif [ -e "$out" ]; then
-    echo "FAIL $name: output folder was created"; failures=$((failures + 1))
-  else
-    echo "ok   $name: $(cat "$work/stderr")"
-  fi
-}
+# expect NAME PATTERN ARGS... (tests/demo/expect.sh)
+source "$(dirname "$0")/expect.sh"
 
 printf 'mesh = [\n' >"$work/malformed.toml"
 printf '[material]\nEE = 3e10\n' >"$work/unknown.toml"
@@ -59,7 +37,13 @@ expect tensile_above_half_fc 'koyna\.toml.*concrete\.ft' --set material.model=pl
 expect negative_fracture_energy 'koyna\.toml.*concrete\.Gf' --set concrete.Gf=-1
 # Hardening (issue 16): absurd values are refused by plausibility bounds
 # before any work, never crash or hang.
-printf '0.1\n1e308\n-1e308\n0.2\n' >"$work/huge.txt"
+printf '0.1\n1e300\n-1e300\n0.2\n' >"$work/huge.txt"
+printf '0.1\n1e308\n-1e308\n0.2\n' >"$work/overflow.txt"
+printf '[motion.horizontal]\nrecord = "overflow.txt"\ndt = 0.01\npeak_g = 0.3\n' >"$work/overflow.toml"
+printf 'h1\nh2\nh3\nNPTS= 3, DT= 5.0 SEC\n0.1 0.2 0.3\n' >"$work/slow.at2"
+printf '[motion.horizontal]\nrecord = "slow.at2"\n' >"$work/slow.toml"
+printf 'h1\nh2\nh3\nNPTS= 3, DT= 1.0 SEC\n0.1 0.2 0.3\n' >"$work/long.at2"
+printf '[motion.horizontal]\nrecord = "long.at2"\n[time]\nduration = 0.0\ndt = 1e-7\n' >"$work/long.toml"
 printf '[motion.horizontal]\nrecord = "huge.txt"\ndt = 0.01\npeak_g = 0\n' >"$work/huge.toml"
 "$(command -v python3)" -c "open('$work/deep.toml','w').write('['+'.'.join(['a']*50000)+']\\n')"
 expect peak_far_too_high 'koyna\.toml.*peak_g.*<= 5' --set motion.horizontal.peak_g=1e308
@@ -71,6 +55,11 @@ expect toe_far_away 'koyna\.toml.*geometry\.toe_x' --set geometry.toe_x=1e308
 expect water_film 'koyna\.toml.*reservoir\.level' --set reservoir.level=1e-12
 expect foundation_size_tiny 'koyna\.toml.*foundation\.mesh_size' --set foundation.enabled=true --set foundation.mesh_size=5e-324
 expect record_not_an_acceleration 'huge\.toml.*motion\.horizontal\.record.*not a ground acceleration' --case "$work/huge.toml"
+expect record_overflows 'overflow\.toml.*motion\.horizontal\.record.*value 2 overflows' --case "$work/overflow.toml"
+expect record_step_implausible 'slow\.toml.*motion\.horizontal\.record.*sampling step 5 s' --case "$work/slow.toml"
+expect record_too_many_steps 'long\.toml.*time\.dt.*2e\+07 steps' --case "$work/long.toml"
+expect crest_point_outside 'koyna\.toml.*output\.crest_point.*outside the model' --set 'output.crest_point=[500.0, 103.0]'
+expect base_point_outside 'koyna\.toml.*output\.base_point.*outside the model' --set 'output.base_point=[35.0, -20.0]'
 expect key_nested_deep 'deep\.toml:1.*nested 50000 levels' --case "$work/deep.toml"
 expect mesh_too_fine 'koyna\.toml.*mesh\.size.*estimated.*mesh\.max_cells' --set mesh.size=1e-6
 

@@ -12,35 +12,41 @@ void arch_dam_schema(input::Schema& s)
   // Dam body (default: the paper's 102 m three-centred dam, assumed
   // tables documented in demos/arch_dam/presets/paper_102m_v.toml)
   s.real("dam.height", "102.0", "m", "crest elevation above the crown base")
-      .above(0);
+      .between(0.1, 500);
   s.real_array("dam.levels", "[0.0, 25.5, 51.0, 76.5, 102.0]", "m",
                "elevations of the level tables (0 ... dam.height)")
-      .at_least(0);
+      .between(0, 500);
   s.real_array("dam.crown_upstream_y", "[4.0, -1.0, -2.5, -1.8, 0.0]", "m",
                "y of the upstream face of the crown cantilever per level "
-               "(downstream positive)");
+               "(downstream positive)")
+      .between(-2000, 2000);
   s.real_array("dam.crown_thickness", "[24.6, 19.0, 13.6, 8.9, 5.0]", "m",
                "crown thickness per level")
-      .above(0);
+      .above(0)
+      .at_most(300);
   s.real_array("dam.abutment_thickness", "[29.5, 24.0, 18.0, 12.0, 7.0]", "m",
                "arch thickness at the canyon walls per level")
-      .above(0);
+      .above(0)
+      .at_most(300);
   s.string("dam.arch_shape", "three_centred", "-",
            "plan shape of the arch rings (centre line)",
            {"three_centred", "parabolic", "circular"});
   s.real_array("dam.radius_central", "[45.0, 70.0, 92.0, 110.0, 122.0]", "m",
                "centre-line radius at the crown per level (parabolic: "
                "radius of curvature at the crown)")
-      .above(0);
+      .above(0)
+      .at_most(1e4);
   s.real_array("dam.radius_lateral", "[75.0, 115.0, 155.0, 190.0, 215.0]", "m",
                "three-centred: radius of the lateral arcs per level")
-      .above(0);
+      .above(0)
+      .at_most(1e4);
   s.real_array("dam.central_angle", "[25.0, 25.0, 25.0, 25.0, 25.0]", "deg",
                "three-centred: half-angle of the central arc per level")
       .between_exclusive(0, 89.5);
   s.real("dam.thickening_exponent", "2.0", "-",
          "T = T_c + (T_a - T_c) |x/X|^p along the arch: p")
-      .above(0);
+      .above(0)
+      .at_most(20);
   s.string("dam.interpolation", "cubic", "-",
            "interpolation of the level tables in z", {"cubic", "linear"});
   // Canyon
@@ -48,36 +54,46 @@ void arch_dam_schema(input::Schema& s)
            "canyon cross-section: v, u or points (piecewise-linear walls)",
            {"v", "u", "points"});
   s.real("canyon.bottom_width", "24.0", "m", "v, u: floor width at z = 0")
-      .above(0);
+      .above(0)
+      .at_most(5000);
   s.real("canyon.crest_width", "260.8", "m",
          "v, u: valley width at the crest elevation")
-      .above(0);
+      .above(0)
+      .at_most(10000);
   s.real("canyon.u_radius", "40.0", "m", "u: radius of the floor fillets")
-      .above(0);
+      .above(0)
+      .at_most(5000);
   s.integer("canyon.u_segments", "12", "-",
             "u: straight segments per fillet (the walls are polylines)")
       .between(1, 200);
   s.real_array("canyon.z", "[]", "m",
-               "points: elevations of the wall points, 0 ... >= dam.height");
+               "points: elevations of the wall points, 0 ... >= dam.height")
+      .between(0, 1000);
   s.real_array("canyon.x_left", "[]", "m",
                "points: x of the left wall (< 0) at canyon.z")
+      .at_least(-5000)
       .below(0);
   s.real_array("canyon.x_right", "[]", "m",
                "points: x of the right wall (> 0) at canyon.z")
-      .above(0);
+      .above(0)
+      .at_most(5000);
   // Foundation block
   s.real("foundation.extent_upstream", "1.0", "H",
          "foundation beyond the most upstream dam point, x dam height")
-      .above(0);
+      .above(0)
+      .at_most(20);
   s.real("foundation.extent_downstream", "1.0", "H",
          "foundation beyond the most downstream dam point, x dam height")
-      .above(0);
+      .above(0)
+      .at_most(20);
   s.real("foundation.extent_below", "1.0", "H",
          "foundation depth below the canyon floor, x dam height")
-      .above(0);
+      .above(0)
+      .at_most(20);
   s.real("foundation.extent_beyond", "1.0", "H",
          "foundation beyond each valley rim (crest level), x dam height")
-      .above(0);
+      .above(0)
+      .at_most(20);
   // Joints
   s.integer("joints.count", "0", "-",
             "candidate joint positions evenly spaced along the crest (used "
@@ -91,13 +107,16 @@ void arch_dam_schema(input::Schema& s)
            "labels of the candidates that are joints, e.g. \"DGJ\" (empty: "
            "all)");
   // Mesh
-  s.real("mesh.size", "6.0", "m", "element size in the dam").above(0);
+  s.real("mesh.size", "6.0", "m", "element size in the dam")
+      .above(0)
+      .at_most(1000);
   s.real("mesh.size_far", "0.0", "m",
          "element size at the far foundation (0: 4 x mesh.size)")
-      .at_least(0);
+      .between(0, 10000);
   s.real("mesh.grading_distance", "0.5", "H",
          "distance from the dam over which the size grades, x dam height")
-      .above(0);
+      .above(0)
+      .at_most(20);
   s.integer("mesh.dam_layers", "0", "-",
             "minimum elements through the crown thickness (0: off)")
       .between(0, 20);

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <damseis/results/output_folder.h>
+#include <sstream>
 #include <stdexcept>
 
 namespace damseis::material
@@ -98,16 +99,19 @@ input::Schema material_point_schema()
            "stress through turning points)",
            {"uniaxial", "biaxial", "triaxial", "cyclic"});
   s.real("path.strain_rate", "1e-5", "1/s", "Axial strain rate (magnitude)")
-      .above(0);
+      .between(1e-9, 1e4);
   s.real("path.max_strain", "5e-4", "-",
-         "Final axial strain eps11 (tension > 0); not for cyclic");
+         "Final axial strain eps11 (tension > 0); not for cyclic")
+      .between(-0.1, 0.1);
   s.real("path.ratio", "0.5", "-", "biaxial: eps22 / eps11").between(-1, 1);
   s.real("path.confinement", "10e6", "Pa",
          "triaxial: lateral compressive stress (magnitude)")
-      .at_least(0);
+      .between(0, 1e9);
   s.real_array("path.turning_points", "[1e-4, -1e-3, 2e-4, -3e-3]", "-",
-               "cyclic: successive eps11 targets");
-  s.real("path.strain_step", "1e-6", "-", "Axial strain per step").above(0);
+               "cyclic: successive eps11 targets")
+      .between(-0.1, 0.1);
+  s.real("path.strain_step", "1e-6", "-", "Axial strain per step")
+      .between(1e-9, 1e-2);
   s.string("output.csv", "material_point.csv", "-",
            "CSV file name in the output folder (the plot takes its name "
            "with .png)");
@@ -133,8 +137,18 @@ MaterialPointConfig read_material_point_config(const input::Case& c)
   const double rate = c.real("path.strain_rate");
   const double step = c.real("path.strain_step");
   const double emax = c.real("path.max_strain");
+  // At most max_steps steps per segment (counted in double: no overflow).
+  constexpr double max_steps = 1e6;
   auto steps_for = [&](double de)
-  { return std::max(1, int(std::ceil(std::abs(de) / step))); };
+  {
+    const double n = std::ceil(std::abs(de) / step);
+    if (!(n <= max_steps))
+      c.fail("path.strain_step",
+             "gives " + (std::ostringstream() << n).str() +
+                 " steps in a segment of the path",
+             "at most 1e6 steps per segment: a larger path.strain_step");
+    return std::max(1, static_cast<int>(n));
+  };
   if (kind != "cyclic" && emax == 0.0)
     c.fail("path.max_strain", "= 0", "a nonzero final strain");
   Segment s;
