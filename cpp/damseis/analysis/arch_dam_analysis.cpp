@@ -1,9 +1,11 @@
 #include "arch_dam_analysis.h"
 #include "linear_seismic.h"
+#include "run_support.h"
 #include <cstdio>
 #include <cstdlib>
 #include <damseis/fem/tied_dofs.h>
 #include <damseis/geometry/arch_mesh.h>
+#include <damseis/geometry/mesh_estimate.h>
 #include <damseis/geometry/tags.h>
 #include <damseis/results/progress.h>
 #include <damseis/results/singular_points.h>
@@ -15,6 +17,8 @@ nlohmann::json run_arch_dam_analysis(MPI_Comm comm, const ArchDamConfig& cfg,
                                      const std::filesystem::path& out_dir,
                                      const std::string& case_text)
 {
+  print_size_estimate(comm, geometry::estimated_cells(cfg.geometry), 3,
+                      cfg.order);
   auto arch = geometry::build_arch_dam(comm, cfg.geometry);
   results::print(
       comm, "arch dam mesh: " + std::to_string(arch.num_cells) + " cells (" +

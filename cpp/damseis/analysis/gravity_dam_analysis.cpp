@@ -1,6 +1,8 @@
 #include "gravity_dam_analysis.h"
 #include "linear_seismic.h"
 #include "nonlinear_seismic.h"
+#include "run_support.h"
+#include <damseis/geometry/mesh_estimate.h>
 #include <damseis/geometry/tags.h>
 #include <damseis/results/progress.h>
 #include <dolfinx/la/petsc.h>
@@ -119,6 +121,8 @@ nlohmann::json run_gravity_dam_analysis(MPI_Comm comm,
                                         const std::filesystem::path& out_dir,
                                         const std::string& case_text)
 {
+  print_size_estimate(comm, geometry::estimated_cells(cfg.section), 2,
+                      cfg.order);
   if (!cfg.table1)
     return run_one(comm, cfg, out_dir, case_text);
   std::vector<std::pair<std::string, nlohmann::json>> runs;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <csignal>
 #include <damseis/fem/tied_dofs.h>
+#include <damseis/geometry/mesh_estimate.h>
 #include <damseis/results/gather.h>
 #include <damseis/results/progress.h>
 #include <damseis/results/singular_points.h>
@@ -593,5 +594,22 @@ json write_faces(MPI_Comm comm, const SeismicSettings& s,
                    {"away_from_singular_points", away}};
   }
   return faces;
+}
+
+void print_size_estimate(MPI_Comm comm, double cells, int dim, int order)
+{
+  const auto e = geometry::estimate_size(cells, dim, order);
+  results::print(comm,
+                 "size estimate before meshing: " + geometry::describe(e));
+  const double available = geometry::machine_memory_gb();
+  if (available > 0.0 && e.memory_gb > 0.8 * available)
+  {
+    std::ostringstream w;
+    w.precision(3);
+    w << "the estimated memory (" << e.memory_gb
+      << " GB) is above 80% of this machine's " << available
+      << " GB: the run may swap or be killed; a larger mesh.size reduces it";
+    results::warn(comm, w.str());
+  }
 }
 } // namespace damseis::analysis

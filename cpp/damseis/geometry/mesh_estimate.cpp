@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <damseis/case/case.h>
+#include <iomanip>
 #include <sstream>
+#include <unistd.h>
 
 namespace damseis::geometry
 {
@@ -72,5 +74,67 @@ void check_cell_estimate(const input::Case& c, double estimate)
                 "machine has the memory";
     c.fail("mesh.size", problem.str(), expected.str());
   }
+}
+
+SizeEstimate estimate_size(double cells, int dim, int order)
+{
+  SizeEstimate e;
+  e.cells = cells;
+  if (dim == 2)
+  {
+    // Triangles: vertices ~ cells / 2, P2 nodes (vertices + edges) ~ 2
+    // cells (Koyna: 8,946 dofs on 2,158 cells).
+    e.dofs = 2.0 * (order == 1 ? 0.5 : 2.0) * cells;
+    // Memory: Koyna P2 at 2, 1, 0.65 m (bench/results/koyna-2026-11-22.md:
+    // 124, 214, 405 MB for 8,946 - 81,104 dofs). Time per step: fitted to
+    // the 2D runs of bench/results/size-estimate-2026-11-25.md (0.46 ms at
+    // 8,946 dofs, 3.6 ms at 34,502).
+    e.memory_gb = 0.09 + 3.9e-6 * e.dofs;
+    e.ms_per_step = 0.46 * std::pow(e.dofs / 8946.0, 1.5);
+  }
+  else
+  {
+    // Tetrahedra: P2 nodes ~ 1.6 cells (paper dam: 410,673 dofs on 86,074
+    // cells), vertices ~ 0.3 cells (Euler: nodes = 2 vertices + cells).
+    e.dofs = 3.0 * (order == 1 ? 0.3 : 1.6) * cells;
+    // Paper dam at 2.3 m and Xiluodu-like at 5.5 m on 2 ranks
+    // (bench/results/arch-2026-11-22.md): 12.6 and 14.4 GB, 0.46 - 0.55 s
+    // per step; sparse direct fill grows as dofs^(4/3) in 3D.
+    const double r = e.dofs / 410673.0;
+    e.memory_gb = 0.4 + 12.3 * std::pow(r, 4.0 / 3.0);
+    e.ms_per_step = 500.0 * std::pow(r, 4.0 / 3.0);
+  }
+  return e;
+}
+
+std::string describe(const SizeEstimate& e)
+{
+  // 2,158 cells; 0.12 GB; 0.43 ms, 130 ms (no exponents for a reader).
+  auto count = [](double v)
+  {
+    if (!(v < 1e15))
+      return (std::ostringstream() << std::setprecision(3) << v).str();
+    std::string digits = std::to_string(std::llround(v));
+    for (int i = static_cast<int>(digits.size()) - 3; i > 0; i -= 3)
+      digits.insert(static_cast<std::size_t>(i), ",");
+    return digits;
+  };
+  auto amount = [&](double v)
+  {
+    return v >= 100.0
+               ? count(v)
+               : (std::ostringstream() << std::setprecision(2) << v).str();
+  };
+  return "about " + count(e.cells) + " cells, " + count(e.dofs) + " dofs, " +
+         amount(e.memory_gb) + " GB of memory, " + amount(e.ms_per_step) +
+         " ms per linear time step";
+}
+
+double machine_memory_gb()
+{
+  const long pages = sysconf(_SC_PHYS_PAGES), size = sysconf(_SC_PAGE_SIZE);
+  return pages > 0 && size > 0
+             ? static_cast<double>(pages) * static_cast<double>(size) / 1e9
+             : 0.0;
 }
 } // namespace damseis::geometry

@@ -2,6 +2,8 @@
 // sizes before gmsh spends minutes and gigabytes on them.
 #pragma once
 
+#include <string>
+
 namespace damseis::input
 {
 class Case;
@@ -30,4 +32,26 @@ double estimated_cells(const ArchDamDefinition& d);
 /// Fails the case (input::InputError on mesh.size, with the estimate) if
 /// `estimate` exceeds mesh.max_cells.
 void check_cell_estimate(const input::Case& c, double estimate);
+
+/// The size of an analysis, estimated before meshing from its cell count.
+struct SizeEstimate
+{
+  double cells = 0;
+  double dofs = 0;
+  double memory_gb = 0;   ///< peak resident memory, all ranks together
+  double ms_per_step = 0; ///< a linear time step (factors reused)
+};
+
+/// Dofs from the cells (Lagrange P1/P2 vectors: nodes per cell of the
+/// measured meshes), memory and time per linear step from fits to the
+/// benchmarks of bench/results (2-core machine: 2D serial with PETSc's LU,
+/// 3D on 2 ranks with MUMPS); see bench/results/size-estimate-*.md for the
+/// estimates against measured runs.
+SizeEstimate estimate_size(double cells, int dim, int order);
+
+/// "about 2,160 cells, 8,950 dofs, 0.12 GB, 0.43 ms per linear step".
+std::string describe(const SizeEstimate& e);
+
+/// Physical memory of this machine in GB (0 if unknown).
+double machine_memory_gb();
 } // namespace damseis::geometry
