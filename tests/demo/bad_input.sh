@@ -61,7 +61,8 @@ expect record_too_many_steps 'long\.toml.*time\.dt.*2e\+07 steps' --case "$work/
 expect crest_point_outside 'koyna\.toml.*output\.crest_point.*outside the model' --set 'output.crest_point=[500.0, 103.0]'
 expect base_point_outside 'koyna\.toml.*output\.base_point.*outside the model' --set 'output.base_point=[35.0, -20.0]'
 expect key_nested_deep 'deep\.toml:1.*nested 50000 levels' --case "$work/deep.toml"
-expect mesh_too_fine 'koyna\.toml.*mesh\.size.*estimated.*mesh\.max_cells' --set mesh.size=1e-6
+expect mesh_too_fine 'koyna\.toml.*mesh\.size.*estimated.*mesh\.max_cells' --set mesh.size=0.01
+expect mesh_size_implausible 'koyna\.toml.*mesh\.size.*0\.001 <= size' --set mesh.size=5e-324
 
 if [ "$failures" -ne 0 ]; then
   echo "$failures bad-input checks failed"; exit 1

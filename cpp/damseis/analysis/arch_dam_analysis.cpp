@@ -19,6 +19,7 @@ nlohmann::json run_arch_dam_analysis(MPI_Comm comm, const ArchDamConfig& cfg,
 {
   print_size_estimate(comm, geometry::estimated_cells(cfg.geometry), 3,
                       cfg.order);
+  results::set_stage("meshing");
   auto arch = geometry::build_arch_dam(comm, cfg.geometry);
   results::print(
       comm, "arch dam mesh: " + std::to_string(arch.num_cells) + " cells (" +

@@ -50,8 +50,9 @@ void stop_on_internal_error(const std::string& program, const std::string& what)
     if (c == '\n' || c == '\r')
       c = ' ';
   }
-  std::fprintf(stderr, "%s: internal error: %s\n", program.c_str(),
-               line.c_str());
+  const std::string& stage = results::current_stage();
+  std::fprintf(stderr, "%s: internal error%s: %s\n", program.c_str(),
+               stage.empty() ? "" : (" during " + stage).c_str(), line.c_str());
   std::fflush(stderr);
   std::fflush(stdout);
   int size = 1, initialized = 0;

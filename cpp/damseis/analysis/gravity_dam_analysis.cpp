@@ -25,6 +25,7 @@ nlohmann::json run_one(MPI_Comm comm, const GravityDamConfig& cfg,
   std::map<int, fem::Material> materials = {{tags::dam, dam}};
   if (foundation)
     materials[tags::foundation] = cfg.rock;
+  results::set_stage("meshing");
   fem::ElasticModel fe(geometry::build_gravity_dam(comm, cfg.section),
                        cfg.order, materials, cfg.plane);
   if (foundation)

@@ -36,7 +36,8 @@ input::Schema gravity_dam_schema()
   s.real("geometry.crest_y", "103.0", "m", "crest elevation (the base is at 0)")
       .above(0)
       .at_most(1000);
-  s.real("mesh.size", "2.0", "m", "element size in the dam").above(0);
+  s.real("mesh.size", "2.0", "m", "element size in the dam")
+      .between(0.001, 1000);
   s.integer("mesh.order", "2", "-", "displacement polynomial degree (1 or 2)")
       .between(1, 2);
   s.integer("mesh.max_cells", "1000000", "-",

@@ -38,6 +38,7 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
                         const std::string& case_text, Mat tie,
                         const std::vector<Vec>& extra_static_loads)
 {
+  results::set_stage("assembly");
   const auto wall_start = Clock::now();
   const auto model = fe.model();
   MPI_Comm comm = model.mesh->comm();
@@ -86,6 +87,7 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   };
 
   // Static stage: dead weight and hydrostatic pressure.
+  results::set_stage("static stage and modal analysis");
   std::array<double, 3> g = {0, 0, 0};
   g[dim - 1] = -s.gravity;
   Vector F_full(fe.assemble_gravity(g), false);
@@ -265,6 +267,7 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     write_checkpoint(comm, ckpt_dir, data, print);
   };
 
+  results::set_stage("time history");
   results::print(comm, "time history: " + std::to_string(n) + " steps of " +
                            std::to_string(dt) + " s, factorisation " +
                            newmark.solver().name());
@@ -282,6 +285,7 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     signals.checkpoint_or_stop(comm, s, k, n, checkpoint, ckpt_dir);
   }
   const double loop_seconds = seconds_since(loop_start);
+  results::set_stage("writing outputs");
   results::reduce_history(comm, hist);
 
   // Crest history relative to the base point.

@@ -141,6 +141,7 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
                            const std::filesystem::path& out_dir,
                            const std::string& case_text)
 {
+  results::set_stage("assembly");
   const auto wall_start = Clock::now();
   const auto model = fe.model();
   MPI_Comm comm = model.mesh->comm();
@@ -192,6 +193,7 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   }
 
   // Modal analysis of the initial elastic system; Rayleigh damping with K0.
+  results::set_stage("modal analysis");
   Matrix M0(nullptr, false);
   if (added)
     M0 = Matrix(fe.assemble_mass(nullptr), false);
@@ -200,6 +202,7 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
 
   // Static stage: dead weight, then the reservoir (and silt, uplift) in
   // increments, with the rate-independent material.
+  results::set_stage("static stage");
   std::array<double, 3> g = {0, 0, 0};
   g[dim - 1] = -s.gravity;
   Vector F_g(fe.assemble_gravity(g), false);
@@ -418,6 +421,7 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     write_checkpoint(comm, ckpt_dir, data, print);
   };
 
+  results::set_stage("time history");
   results::print(comm, "time history: " + std::to_string(n) + " steps of " +
                            std::to_string(dt) + " s, factorisation " +
                            newmark.solver().name());
@@ -477,6 +481,7 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     signals.checkpoint_or_stop(comm, s, k, n, checkpoint, ckpt_dir);
   }
   const double loop_seconds = seconds_since(loop_start);
+  results::set_stage("writing outputs");
   results::reduce_history(comm, hist);
   const json crest_summary =
       write_crest_history(comm, hist, dim, n, dt, crest_static, base_static,

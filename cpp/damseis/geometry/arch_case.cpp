@@ -108,8 +108,7 @@ void arch_dam_schema(input::Schema& s)
            "all)");
   // Mesh
   s.real("mesh.size", "6.0", "m", "element size in the dam")
-      .above(0)
-      .at_most(1000);
+      .between(0.001, 1000);
   s.real("mesh.size_far", "0.0", "m",
          "element size at the far foundation (0: 4 x mesh.size)")
       .between(0, 10000);

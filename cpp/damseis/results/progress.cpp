@@ -71,4 +71,23 @@ const std::vector<std::string>& warnings()
 {
   return warning_list();
 }
+
+namespace
+{
+std::string& stage_name()
+{
+  static std::string name;
+  return name;
+}
+} // namespace
+
+void set_stage(const std::string& name)
+{
+  stage_name() = name;
+}
+
+const std::string& current_stage()
+{
+  return stage_name();
+}
 } // namespace damseis::results

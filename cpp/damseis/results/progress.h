@@ -36,4 +36,10 @@ void print(MPI_Comm comm, const std::string& line);
 void warn(MPI_Comm comm, const std::string& text);
 /// The warnings of this process so far.
 const std::vector<std::string>& warnings();
+
+/// The stage the run is in ("meshing", "static stage", "modal analysis",
+/// "time history", "writing outputs"), named in the one-line report of an
+/// internal error (analysis/demo_main). Empty before the analysis starts.
+void set_stage(const std::string& name);
+const std::string& current_stage();
 } // namespace damseis::results
