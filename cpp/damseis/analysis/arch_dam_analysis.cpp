@@ -18,7 +18,7 @@ nlohmann::json run_arch_dam_analysis(MPI_Comm comm, const ArchDamConfig& cfg,
                                      const std::string& case_text)
 {
   print_size_estimate(comm, geometry::estimated_cells(cfg.geometry), 3,
-                      cfg.order);
+                      cfg.order, cfg.seismic.steps);
   results::set_stage("meshing");
   auto arch = geometry::build_arch_dam(comm, cfg.geometry);
   results::print(

@@ -123,7 +123,7 @@ nlohmann::json run_gravity_dam_analysis(MPI_Comm comm,
                                         const std::string& case_text)
 {
   print_size_estimate(comm, geometry::estimated_cells(cfg.section), 2,
-                      cfg.order);
+                      cfg.order, cfg.seismic.steps);
   if (!cfg.table1)
     return run_one(comm, cfg, out_dir, case_text);
   std::vector<std::pair<std::string, nlohmann::json>> runs;

@@ -596,11 +596,24 @@ json write_faces(MPI_Comm comm, const SeismicSettings& s,
   return faces;
 }
 
-void print_size_estimate(MPI_Comm comm, double cells, int dim, int order)
+void print_size_estimate(MPI_Comm comm, double cells, int dim, int order,
+                         int steps)
 {
   const auto e = geometry::estimate_size(cells, dim, order);
+  // The linear time history; nonlinear steps cost several of these.
+  const double seconds = 1e-3 * e.ms_per_step * steps;
+  std::ostringstream history;
+  history.precision(2);
+  if (seconds < 120)
+    history << seconds << " s";
+  else if (seconds < 7200)
+    history << seconds / 60 << " min";
+  else
+    history << seconds / 3600 << " h";
   results::print(comm,
-                 "size estimate before meshing: " + geometry::describe(e));
+                 "size estimate before meshing: " + geometry::describe(e) +
+                     " (" + std::to_string(steps) + " steps: about " +
+                     history.str() + " if linear)");
   const double available = geometry::machine_memory_gb();
   if (available > 0.0 && e.memory_gb > 0.8 * available)
   {

@@ -122,9 +122,10 @@ void write_modes(fem::ElasticModel& fe, const fem::Modes& modes,
 void print_model_line(fem::ElasticModel& fe, const std::string& suffix);
 
 /// Prints the size of the analysis estimated before meshing (cells, dofs,
-/// memory, time per step), with a warning if the memory exceeds this
-/// machine's.
-void print_size_estimate(MPI_Comm comm, double cells, int dim, int order);
+/// memory, time per step and for the `steps` of a linear time history),
+/// with a warning if the memory exceeds 80% of this machine's.
+void print_size_estimate(MPI_Comm comm, double cells, int dim, int order,
+                         int steps);
 
 /// Gathers every rank's rows (`columns` values each, flattened) on rank 0
 /// and writes them under `header` as CSV (8 digits).
