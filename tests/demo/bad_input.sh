@@ -55,6 +55,13 @@ expect toe_far_away 'koyna\.toml.*geometry\.toe_x' --set geometry.toe_x=1e308
 expect water_film 'koyna\.toml.*reservoir\.level' --set reservoir.level=1e-12
 expect foundation_size_tiny 'koyna\.toml.*foundation\.mesh_size' --set foundation.enabled=true --set foundation.mesh_size=5e-324
 expect record_not_an_acceleration 'huge\.toml.*motion\.horizontal\.record.*not a ground acceleration' --case "$work/huge.toml"
+printf '0.1\n0.2\n0.3\n' >"$work/one.txt"
+printf '[motion.horizontal]\nrecord = "one.txt"\ndt = 1e308\n[time]\nduration = 0.0\n' >"$work/onedt.toml"
+head -c 2000 /dev/zero | tr '\0' '\1' >"$work/binary.at2"
+printf 'x\0y\n' >>"$work/binary.at2"
+printf '[motion.horizontal]\nrecord = "binary.at2"\n' >"$work/binary.toml"
+expect record_dt_far_too_long 'onedt\.toml.*motion\.horizontal\.dt.*dt <= 1' --case "$work/onedt.toml"
+expect record_binary 'binary\.toml.*motion\.horizontal\.record.*not a text file.*expected' --case "$work/binary.toml"
 expect record_overflows 'overflow\.toml.*motion\.horizontal\.record.*value 2 overflows' --case "$work/overflow.toml"
 expect record_step_implausible 'slow\.toml.*motion\.horizontal\.record.*sampling step 5 s' --case "$work/slow.toml"
 expect record_too_many_steps 'long\.toml.*time\.dt.*2e\+07 steps' --case "$work/long.toml"
