@@ -27,10 +27,15 @@ std::string str(double v)
   return os.str();
 }
 
+[[noreturn]] void fail(const std::string& field, const std::string& what)
+{
+  throw std::invalid_argument(field + ": " + what);
+}
+
 void require(bool ok, const std::string& field, const std::string& what)
 {
   if (!ok)
-    throw std::invalid_argument(field + ": " + what);
+    fail(field, what);
 }
 
 /// Gauss-Legendre nodes and weights on [-1, 1] (Newton on P_n).
@@ -592,28 +597,32 @@ void ArchDamGeometry::validate() const
   {
     const double z = -0.05 * H + 1.1 * H * i / 200.0;
     const Ring r = ring(z);
-    const std::string at = " (interpolated at z = " + str(z) + ")";
-    require(r.t_c > 0, "dam.crown_thickness", "must be positive" + at);
-    require(r.t_a > 0, "dam.abutment_thickness", "must be positive" + at);
-    require(r.r_c > 0, "dam.radius_central", "must be positive" + at);
-    if (tc)
-    {
-      require(r.r_l > 0, "dam.radius_lateral", "must be positive" + at);
-      require(r.phi_c > 0 and r.phi_c < theta_max, "dam.central_angle",
-              "must be in (0, 89.5) degrees" + at);
-    }
+    // (Messages are built only on failure: this loop runs 200 levels.)
+    auto at = [&] { return " (interpolated at z = " + str(z) + ")"; };
+    if (!(r.t_c > 0))
+      fail("dam.crown_thickness", "must be positive" + at());
+    if (!(r.t_a > 0))
+      fail("dam.abutment_thickness", "must be positive" + at());
+    if (!(r.r_c > 0))
+      fail("dam.radius_central", "must be positive" + at());
+    if (tc && !(r.r_l > 0))
+      fail("dam.radius_lateral", "must be positive" + at());
+    if (tc && !(r.phi_c > 0 and r.phi_c < theta_max))
+      fail("dam.central_angle", "must be in (0, 89.5) degrees" + at());
     if (z < 0 or z > H)
       continue;
     // The centre line must reach both walls with a tangent below 89.5 deg
     const double xr = centre(z, theta_max)[0];
-    require(xr > x_right(z) + 0.5 * r.t_a, "dam.radius_lateral",
-            "the arch at z = " + str(z) +
-                " does not reach the canyon walls (centre line bends back "
-                "before x = " +
-                str(x_right(z)) + "); increase the radii");
-    require(-xr < x_left(z) - 0.5 * r.t_a, "dam.radius_lateral",
-            "the arch at z = " + str(z) +
-                " does not reach the left canyon wall; increase the radii");
+    if (!(xr > x_right(z) + 0.5 * r.t_a))
+      fail("dam.radius_lateral",
+           "the arch at z = " + str(z) +
+               " does not reach the canyon walls (centre line bends back "
+               "before x = " +
+               str(x_right(z)) + "); increase the radii");
+    if (!(-xr < x_left(z) - 0.5 * r.t_a))
+      fail("dam.radius_lateral",
+           "the arch at z = " + str(z) +
+               " does not reach the left canyon wall; increase the radii");
     const double a = theta_at_x(z, x_left(z)), b = theta_at_x(z, x_right(z));
     for (int side : {-1, 1})
     {
@@ -622,22 +631,23 @@ void ArchDamGeometry::validate() const
       {
         const double t = a - 0.1 + (b - a + 0.2) * j / 80.0;
         const double xf = face_point(z, t, side)[0];
-        require(xf > xprev, "dam.abutment_thickness",
-                "the " + std::string(side < 0 ? "upstream" : "downstream") +
-                    " face at z = " + str(z) +
-                    " folds back near the walls (thickening too fast "
-                    "for the radius of curvature)");
+        if (!(xf > xprev))
+          fail("dam.abutment_thickness",
+               "the " + std::string(side < 0 ? "upstream" : "downstream") +
+                   " face at z = " + str(z) +
+                   " folds back near the walls (thickening too fast "
+                   "for the radius of curvature)");
         xprev = xf;
       }
     }
     for (int j = 0; j <= 40; ++j)
     {
       const double t = a + (b - a) * j / 40.0;
-      require(0.5 * thickness(z, t) < 0.9 * curvature_radius(z, t),
-              tc ? "dam.radius_lateral" : "dam.radius_central",
-              "the radius of curvature at z = " + str(z) +
-                  " is smaller than half the thickness (the downstream "
-                  "face folds)");
+      if (!(0.5 * thickness(z, t) < 0.9 * curvature_radius(z, t)))
+        fail(tc ? "dam.radius_lateral" : "dam.radius_central",
+             "the radius of curvature at z = " + str(z) +
+                 " is smaller than half the thickness (the downstream "
+                 "face folds)");
     }
   }
   const FoundationDefinition& f = d.foundation;
