@@ -1,0 +1,28 @@
+/// @file baseline.h
+/// Baseline correction of ground accelerations: a least-squares polynomial
+/// removed from the displacement (so that velocity and displacement end
+/// near zero), and a zero-phase Butterworth band-pass (FFTW).
+#pragma once
+
+#include <vector>
+
+namespace damseis::motion
+{
+/// Fits the displacement d(t) (integrated from rest, exact for linear a)
+/// with c_2 t^2 + ... + c_degree t^degree by least squares, constrained to
+/// end with the record's displacement and velocity, and subtracts the fit's
+/// second derivative from `a`: the corrected motion still starts at rest
+/// (no t^0, t^1 terms) and ends with zero velocity and displacement (to
+/// round-off). 3 <= degree <= 8. The basis is in t / t_end; Eigen's QR
+/// solves the constrained fit (null-space method).
+void remove_displacement_trend(std::vector<double>& a, double dt,
+                               int degree = 6);
+
+/// Zero-phase Butterworth band-pass of order `order` (per direction: the
+/// gain is |H|^2, as a forward-backward filter): gain
+/// 1 / ((1 + (f_low/f)^(2n)) (1 + (f/f_high)^(2n))) applied to the FFT of
+/// `a` padded with zeros (FFTW). f_low = 0 or f_high >= Nyquist switches
+/// that side off. Throws std::invalid_argument for bad frequencies.
+void butterworth_bandpass(std::vector<double>& a, double dt, double f_low,
+                          double f_high, int order = 4);
+} // namespace damseis::motion
