@@ -116,3 +116,29 @@ TEST(Baseline, BadArgumentsThrow)
   EXPECT_THROW(butterworth_bandpass(a, 0.01, 0.1, 10.0, 0),
                std::invalid_argument);
 }
+
+// end_at_rest: a windowed burst plus an offset and a trend (its velocity
+// and displacement do not end at zero) ends exactly at rest (the integrals
+// of the piecewise-linear record: asserted 1e-12 of PGV and PGD) after
+// subtracting shape (c0 + c1 t/T); the correction is that combination (a
+// record that already ends at rest is unchanged to round-off).
+TEST(Baseline, EndAtRestZeroesFinalVelocityAndDisplacement)
+{
+  const double dt = 0.01, tend = 20.0;
+  const std::size_t n = 2001;
+  std::vector<double> shape(n), a(n);
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    const double t = dt * k, window = std::sin(pi * t / tend);
+    shape[k] = window * window;
+    a[k] = 2.0 * std::sin(2 * pi * 1.7 * t) * shape[k] + 0.03 + 0.001 * t;
+  }
+  end_at_rest(a, dt, shape);
+  Measures m = measures(a, dt);
+  EXPECT_LT(std::abs(m.final_velocity), 1e-12 * m.pgv);
+  EXPECT_LT(std::abs(m.final_displacement), 1e-12 * m.pgd);
+  const std::vector<double> again = a;
+  end_at_rest(a, dt, shape);
+  for (std::size_t k = 0; k < n; ++k)
+    EXPECT_NEAR(a[k], again[k], 1e-12);
+}

@@ -74,10 +74,13 @@ void remove_displacement_trend(std::vector<double>& a, double dt, int degree)
       qr.matrixQR().topRows(2).triangularView<Eigen::Upper>();
   const Eigen::VectorXd c_p =
       q.leftCols(2) * r.transpose().triangularView<Eigen::Lower>().solve(ends);
-  const Eigen::MatrixXd z_basis = q.rightCols(m - 2);
-  const Eigen::VectorXd z =
-      (basis * z_basis).colPivHouseholderQr().solve(rhs - basis * c_p);
-  const Eigen::VectorXd c = c_p + z_basis * z;
+  Eigen::VectorXd c = c_p;
+  if (m > 2) // degree 3: the constraints fix both terms
+  {
+    const Eigen::MatrixXd z_basis = q.rightCols(m - 2);
+    c += z_basis *
+         (basis * z_basis).colPivHouseholderQr().solve(rhs - basis * c_p);
+  }
   // Second derivative in t: sum_j c_j j (j-1) x^(j-2) / tend^2.
   for (std::size_t k = 0; k < n; ++k)
   {
@@ -90,6 +93,40 @@ void remove_displacement_trend(std::vector<double>& a, double dt, int degree)
     }
     a[k] -= second / (tend * tend);
   }
+}
+
+void end_at_rest(std::vector<double>& a, double dt,
+                 const std::vector<double>& shape)
+{
+  const std::size_t n = a.size();
+  if (shape.size() != n)
+    throw std::invalid_argument(
+        "end_at_rest: shape of " + std::to_string(shape.size()) +
+        " samples for a record of " + std::to_string(n));
+  if (n < 3)
+    return;
+  // End velocity and displacement are linear in the record: those of a,
+  // of shape and of shape * t / t_end.
+  const double tend = dt * static_cast<double>(n - 1);
+  std::vector<double> g0(shape), g1(n);
+  for (std::size_t k = 0; k < n; ++k)
+    g1[k] = shape[k] * dt * static_cast<double>(k) / tend;
+  auto ends = [&](const std::vector<double>& x)
+  {
+    std::vector<double> v, d;
+    integrate(x, dt, v, d);
+    return Eigen::Vector2d(v.back(), d.back());
+  };
+  Eigen::Matrix2d m;
+  m.col(0) = ends(g0);
+  m.col(1) = ends(g1);
+  const Eigen::FullPivLU<Eigen::Matrix2d> lu(m);
+  if (!lu.isInvertible())
+    throw std::invalid_argument("end_at_rest: the shape cannot bring the "
+                                "motion to rest");
+  const Eigen::Vector2d c = lu.solve(ends(a));
+  for (std::size_t k = 0; k < n; ++k)
+    a[k] -= c(0) * g0[k] + c(1) * g1[k];
 }
 
 void butterworth_bandpass(std::vector<double>& a, double dt, double f_low,

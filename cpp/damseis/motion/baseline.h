@@ -18,6 +18,16 @@ namespace damseis::motion
 void remove_displacement_trend(std::vector<double>& a, double dt,
                                int degree = 6);
 
+/// Makes a motion end at rest (zero velocity and displacement, exactly for
+/// the piecewise-linear record) by subtracting shape(t) (c0 + c1 t / t_end)
+/// with the two coefficients that do it. With `shape` the record's
+/// intensity envelope the correction is smooth and spread over the strong
+/// motion (little content at structural periods, unlike a polynomial
+/// in t). `shape` holds one value per sample; throws if it cannot
+/// (a shape whose two moments are dependent).
+void end_at_rest(std::vector<double>& a, double dt,
+                 const std::vector<double>& shape);
+
 /// Zero-phase Butterworth band-pass of order `order` (per direction: the
 /// gain is |H|^2, as a forward-backward filter): gain
 /// 1 / ((1 + (f_low/f)^(2n)) (1 + (f/f_high)^(2n))) applied to the FFT of

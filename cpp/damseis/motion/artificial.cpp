@@ -1,0 +1,581 @@
+#include "artificial.h"
+#include "baseline.h"
+#include "record.h"
+#include <Eigen/Dense>
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <fftw3.h>
+#include <memory>
+#include <numbers>
+#include <random>
+#include <sstream>
+#include <stdexcept>
+
+namespace damseis::motion
+{
+namespace
+{
+constexpr double pi = std::numbers::pi;
+
+void require(bool ok, const std::string& what)
+{
+  if (!ok)
+    throw std::invalid_argument(what);
+}
+
+std::string num(double x)
+{
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+
+void check(const ArtificialSettings& s)
+{
+  require(s.dt > 0 && s.dt <= 0.05,
+          "time step " + num(s.dt) + " s; expected 0 < dt <= 0.05");
+  require(s.duration >= 10 * s.dt && s.duration <= 600,
+          "duration " + num(s.duration) + " s; expected 10 dt to 600 s");
+  const Envelope& e = s.envelope;
+  require(e.rise > 0 && e.strong_end > e.rise && e.strong_end < s.duration &&
+              e.decay > 0,
+          "envelope rise " + num(e.rise) + " s, strong_end " +
+              num(e.strong_end) + " s, decay " + num(e.decay) +
+              " 1/s; expected 0 < rise < strong_end < duration, decay > 0");
+  require(!s.control_periods.empty(), "no control periods");
+  for (double t : s.control_periods)
+    require(t > 2 * s.dt && t <= s.duration / 2,
+            "control period " + num(t) + " s; expected 2 dt < T <= duration/2");
+  require(s.damping > 0 && s.damping < 1,
+          "damping " + num(s.damping) + "; expected 0 < damping < 1");
+  require(s.tolerance > 0 && s.tolerance < 1,
+          "tolerance " + num(s.tolerance) + "; expected 0 < tolerance < 1");
+  require(s.max_iterations >= 1 && s.max_iterations <= 1000,
+          "max_iterations " + std::to_string(s.max_iterations) +
+              "; expected 1 to 1000");
+}
+
+/// Fast FFT size >= n (factors 2, 3, 5).
+std::size_t fast_size(std::size_t n)
+{
+  for (std::size_t m = n;; ++m)
+  {
+    std::size_t r = m;
+    for (std::size_t p : {2, 3, 5})
+      while (r % p == 0)
+        r /= p;
+    if (r == 1)
+      return m;
+  }
+}
+
+/// Linear interpolation of y(log T) at log t, clamped at the ends.
+double interpolate_log(const std::vector<double>& periods,
+                       const std::vector<double>& y, double t)
+{
+  if (t <= periods.front())
+    return y.front();
+  if (t >= periods.back())
+    return y.back();
+  const auto it = std::upper_bound(periods.begin(), periods.end(), t);
+  const std::size_t i = static_cast<std::size_t>(it - periods.begin());
+  const double w =
+      std::log(t / periods[i - 1]) / std::log(periods[i] / periods[i - 1]);
+  return (1 - w) * y[i - 1] + w * y[i];
+}
+
+/// Sum of A_k cos(w_k t + phi_k) over the FFT frequencies (FFTW c2r).
+class Synthesis
+{
+public:
+  explicit Synthesis(std::size_t size)
+      : size_(size), bins_(size / 2 + 1), x_(size),
+        c_(static_cast<fftw_complex*>(
+               fftw_malloc(sizeof(fftw_complex) * bins_)),
+           &fftw_free)
+  {
+    plan_ = fftw_plan_dft_c2r_1d(static_cast<int>(size), c_.get(), x_.data(),
+                                 FFTW_ESTIMATE);
+  }
+  ~Synthesis() { fftw_destroy_plan(plan_); }
+  Synthesis(const Synthesis&) = delete;
+  Synthesis& operator=(const Synthesis&) = delete;
+
+  std::size_t bins() const { return bins_; }
+  const std::vector<double>& run(const std::vector<double>& amplitude,
+                                 const std::vector<double>& phase)
+  {
+    // x_j = sum_k X_k e^{2 pi i jk/N} over the Hermitian spectrum:
+    // X_k = A_k / 2 e^{i phi_k} gives sum_k A_k cos(w_k t_j + phi_k).
+    for (std::size_t k = 0; k < bins_; ++k)
+    {
+      c_[k][0] = 0.5 * amplitude[k] * std::cos(phase[k]);
+      c_[k][1] = 0.5 * amplitude[k] * std::sin(phase[k]);
+    }
+    fftw_execute(plan_);
+    return x_;
+  }
+
+private:
+  std::size_t size_, bins_;
+  std::vector<double> x_;
+  std::unique_ptr<fftw_complex[], decltype(&fftw_free)> c_;
+  fftw_plan plan_;
+};
+
+/// Multiplies the Fourier transform of a record (zero padded to twice its
+/// length, against wrap-around) by a real gain per frequency (FFTW).
+class FourierGain
+{
+public:
+  explicit FourierGain(std::size_t n)
+      : n_(n), size_(fast_size(2 * n)), bins_(size_ / 2 + 1), x_(size_),
+        c_(static_cast<fftw_complex*>(
+               fftw_malloc(sizeof(fftw_complex) * bins_)),
+           &fftw_free)
+  {
+    forward_ = fftw_plan_dft_r2c_1d(static_cast<int>(size_), x_.data(),
+                                    c_.get(), FFTW_ESTIMATE);
+    backward_ = fftw_plan_dft_c2r_1d(static_cast<int>(size_), c_.get(),
+                                     x_.data(), FFTW_ESTIMATE);
+  }
+  ~FourierGain()
+  {
+    fftw_destroy_plan(forward_);
+    fftw_destroy_plan(backward_);
+  }
+  FourierGain(const FourierGain&) = delete;
+  FourierGain& operator=(const FourierGain&) = delete;
+
+  /// a <- IFFT(gain(f) FFT(a)); gain is called with f in Hz (f > 0; the
+  /// mean keeps gain 1).
+  template <typename Gain>
+  void apply(std::vector<double>& a, double dt, Gain&& gain)
+  {
+    std::fill(x_.begin(), x_.end(), 0.0);
+    std::copy(a.begin(), a.end(), x_.begin());
+    fftw_execute(forward_);
+    const double df = 1.0 / (static_cast<double>(size_) * dt);
+    for (std::size_t k = 0; k < bins_; ++k)
+    {
+      const double g = (k == 0 ? 1.0 : gain(df * static_cast<double>(k))) /
+                       static_cast<double>(size_);
+      c_[k][0] *= g;
+      c_[k][1] *= g;
+    }
+    fftw_execute(backward_);
+    std::copy(x_.begin(), x_.begin() + static_cast<std::ptrdiff_t>(n_),
+              a.begin());
+  }
+
+private:
+  std::size_t n_, size_, bins_;
+  std::vector<double> x_;
+  std::unique_ptr<fftw_complex[], decltype(&fftw_free)> c_;
+  fftw_plan forward_, backward_;
+};
+
+/// Makes max |a| equal `pga` without scaling the whole record (which would
+/// undo the spectral matching): each sample above it is brought down by a
+/// Ricker pulse (1 - (t/s)^2) exp(-t^2 / 2 s^2), s = 2 dt, centred on it:
+/// zero area and zero first moment, so the velocity and displacement at the
+/// end do not change. A record whose peak is below is scaled up.
+void set_peak(std::vector<double>& a, double pga, double dt)
+{
+  const double sigma = 2.0 * dt;
+  const int half = 10; // +-5 sigma
+  const auto n = static_cast<int>(a.size());
+  for (int pass = 0; pass < 10 * n; ++pass)
+  {
+    const auto it = std::max_element(a.begin(), a.end(),
+                                     [](double x, double y)
+                                     { return std::abs(x) < std::abs(y); });
+    const double excess = std::abs(*it) - pga;
+    if (excess <= 1e-12 * pga)
+      break;
+    const int k = static_cast<int>(it - a.begin());
+    const double sign = *it > 0 ? 1.0 : -1.0;
+    for (int j = std::max(0, k - half); j <= std::min(n - 1, k + half); ++j)
+    {
+      const double x = (j - k) * dt / sigma;
+      a[static_cast<std::size_t>(j)] -=
+          sign * excess * (1.0 - x * x) * std::exp(-0.5 * x * x);
+    }
+  }
+  scale_to_peak(a, pga);
+}
+
+/// The improved tapered cosine wavelet of Al Atik & Abrahamson (2010,
+/// Earthquake Spectra 26(3)), for period T and damping beta: its response
+/// of the SDOF of that period peaks at t_peak; it adds no drift (its
+/// integral is below 1e-5 of its amplitude times its width).
+struct Wavelet
+{
+  double w_prime, gamma, shift, t_peak;
+  Wavelet(double period, double beta, double t)
+  {
+    const double w = 2.0 * pi / period, f = 1.0 / period;
+    w_prime = w * std::sqrt(1.0 - beta * beta);
+    gamma = 1.178 * std::pow(f, -0.93);
+    shift = std::atan(std::sqrt(1.0 - beta * beta) / beta) / w_prime;
+    t_peak = t;
+  }
+  double operator()(double t) const
+  {
+    const double x = t - t_peak + shift;
+    return std::cos(w_prime * x) * std::exp(-(x / gamma) * (x / gamma));
+  }
+  double start() const { return t_peak - shift - 4.0 * gamma; }
+  double end() const { return t_peak - shift + 4.0 * gamma; }
+};
+
+/// The SDOF of one control period, stepped `substeps` times per record
+/// step over the record's piecewise-linear input (as response_spectrum
+/// does, so that matching and acceptance see the same peaks).
+struct Oscillator
+{
+  Sdof sdof;
+  int substeps;
+  double w2;
+  Oscillator(double period, double beta, double dt)
+      : sdof(period, beta,
+             dt / std::max(1, static_cast<int>(std::ceil(64 * dt / period)))),
+        substeps(std::max(1, static_cast<int>(std::ceil(64 * dt / period)))),
+        w2(std::pow(2.0 * pi / period, 2))
+  {
+  }
+  /// Steps (u, v) over input samples x[k0..] until substep index `stop`
+  /// (counted from sample 0: stop = k * substeps + j) or the last sample;
+  /// returns the substep index reached. `watch`: track the peak |u|.
+  long run(const double* x, long k0, long k_last, long stop, double& u,
+           double& v, double* peak = nullptr, long* at = nullptr) const
+  {
+    long index = k0 * substeps;
+    for (long k = k0; k < k_last && index < stop; ++k)
+    {
+      const double slope = (x[k + 1] - x[k]) / substeps;
+      double a0 = x[k];
+      for (int j = 1; j <= substeps && index < stop; ++j)
+      {
+        const double a1 = j == substeps ? x[k + 1] : x[k] + slope * j;
+        const double un =
+            sdof.a11 * u + sdof.a12 * v + sdof.b11 * a0 + sdof.b12 * a1;
+        v = sdof.a21 * u + sdof.a22 * v + sdof.b21 * a0 + sdof.b22 * a1;
+        u = un;
+        a0 = a1;
+        ++index;
+        if (peak && std::abs(u) > *peak)
+        {
+          *peak = std::abs(u);
+          *at = index;
+        }
+      }
+    }
+    return index;
+  }
+};
+
+/// One time-domain adjustment (Al Atik & Abrahamson 2010): wavelets aligned
+/// on the peak responses, amplitudes b from C b = Q - R with C_ij the
+/// response of oscillator j at its peak time to wavelet i (sampled like the
+/// record, so C is what adding it does), Tikhonov-regularised (neighbouring
+/// periods whose peaks coincide have nearly equal wavelets), then
+/// a += sum_i b_i f_i.
+void wavelet_adjust(std::vector<double>& a, double dt,
+                    const std::vector<double>& periods,
+                    const std::vector<double>& target, double beta)
+{
+  const std::size_t m = periods.size();
+  const long n = static_cast<long>(a.size());
+  std::vector<Oscillator> osc;
+  std::vector<long> stop(m);
+  std::vector<Wavelet> wavelets;
+  Eigen::VectorXd dr(static_cast<Eigen::Index>(m));
+  for (std::size_t j = 0; j < m; ++j)
+  {
+    osc.emplace_back(periods[j], beta, dt);
+    double u = 0, v = 0, peak = 0;
+    long at = 0;
+    osc[j].run(a.data(), 0, n - 1, LONG_MAX, u, v, &peak, &at);
+    stop[j] = at;
+    // The signed peak: rerun to it (cheap next to the matrix below).
+    double u2 = 0, v2 = 0;
+    osc[j].run(a.data(), 0, n - 1, at, u2, v2);
+    const double r = -osc[j].w2 * u2; // pseudo-acceleration, driven by -a
+    const double t = dt * static_cast<double>(at) / osc[j].substeps;
+    wavelets.emplace_back(periods[j], beta, t);
+    dr(static_cast<Eigen::Index>(j)) = std::copysign(target[j], r) - r;
+  }
+  Eigen::MatrixXd c = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(m),
+                                            static_cast<Eigen::Index>(m));
+  std::vector<std::vector<double>> samples(m);
+  std::vector<long> first(m);
+  for (std::size_t i = 0; i < m; ++i)
+  {
+    const Wavelet& wi = wavelets[i];
+    const long k0 =
+        std::max(0L, static_cast<long>(std::floor(wi.start() / dt)));
+    const long k1 =
+        std::min(n - 1, static_cast<long>(std::ceil(wi.end() / dt)));
+    first[i] = k0;
+    for (long k = k0; k <= k1; ++k)
+      samples[i].push_back(wi(dt * static_cast<double>(k)));
+    if (k1 <= k0)
+      continue;
+    // The wavelet's samples at their record positions (a zero-based view
+    // shifted by k0).
+    const double* x = samples[i].data() - k0;
+    for (std::size_t j = 0; j < m; ++j)
+    {
+      const Oscillator& o = osc[j];
+      if (stop[j] <= k0 * o.substeps)
+        continue;
+      double u = 0, v = 0;
+      const long reached = o.run(x, k0, k1, stop[j], u, v);
+      if (reached < stop[j])
+      {
+        // Free vibration from the end of the wavelet to the peak time.
+        const double w = std::sqrt(o.w2), z = beta;
+        const double wd = w * std::sqrt(1 - z * z);
+        const double tau =
+            dt * static_cast<double>(stop[j] - reached) / o.substeps;
+        const double e = std::exp(-z * w * tau);
+        u = e * (u * std::cos(wd * tau) +
+                 (v + z * w * u) / wd * std::sin(wd * tau));
+      }
+      c(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(i)) = -o.w2 * u;
+    }
+  }
+  const double lambda = 0.05;
+  const Eigen::MatrixXd ctc = c.transpose() * c;
+  Eigen::MatrixXd reg = ctc;
+  for (Eigen::Index i = 0; i < ctc.rows(); ++i)
+    reg(i, i) += lambda * ctc(i, i);
+  const Eigen::VectorXd b = reg.ldlt().solve(c.transpose() * dr);
+
+  for (std::size_t i = 0; i < m; ++i)
+    for (std::size_t k = 0; k < samples[i].size(); ++k)
+      a[static_cast<std::size_t>(first[i]) + k] +=
+          b(static_cast<Eigen::Index>(i)) * samples[i][k];
+}
+} // namespace
+
+double Envelope::operator()(double t) const
+{
+  if (t < rise)
+    return (t / rise) * (t / rise);
+  if (t <= strong_end)
+    return 1.0;
+  return std::exp(-decay * (t - strong_end));
+}
+
+namespace
+{
+/// Where a spectrum is farthest from its target over the control range
+/// (the matching periods without their first and last, which extend it).
+struct Deviation
+{
+  double worst = HUGE_VAL; ///< max |Sa / target - 1|
+  double ratio = 1, period = 0;
+};
+
+Deviation deviation(const Spectrum& sp, const std::vector<double>& target,
+                    std::vector<double>& correction)
+{
+  Deviation d{0.0, 1.0, 0.0};
+  correction.resize(target.size());
+  for (std::size_t i = 0; i < target.size(); ++i)
+  {
+    correction[i] = target[i] / sp.psa[i];
+    const double r = sp.psa[i] / target[i];
+    if (i > 0 && i + 1 < target.size() && std::abs(r - 1) > d.worst)
+      d = {std::abs(r - 1), r, sp.period[i]};
+  }
+  return d;
+}
+
+/// Fourier amplitudes of a stationary process whose spectrum is near the
+/// target: G(w) ~ (2 zeta / (pi w)) Sa^2 (Vanmarcke), the peak factor left
+/// to the PGA; random phases from `seed`.
+void initial_process(const std::vector<double>& periods,
+                     const std::vector<double>& sa, double damping, double df,
+                     std::uint64_t seed, std::vector<double>& amplitude,
+                     std::vector<double>& phase)
+{
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> uniform(0.0, 2.0 * pi);
+  for (std::size_t k = 1; k < amplitude.size(); ++k)
+  {
+    const double f = df * static_cast<double>(k);
+    amplitude[k] = std::sqrt(2.0 * damping / (pi * 2.0 * pi * f)) *
+                   interpolate_log(periods, sa, 1.0 / f) *
+                   std::sqrt(2.0 * pi * df);
+    phase[k] = uniform(rng);
+  }
+}
+} // namespace
+
+ArtificialComponent generate_component(const DesignSpectrum& target,
+                                       const ArtificialSettings& s,
+                                       std::uint64_t seed)
+{
+  check(s);
+  const auto n = static_cast<std::size_t>(std::llround(s.duration / s.dt)) + 1;
+  const std::size_t size = fast_size(n);
+  Synthesis synthesis(size);
+  FourierGain fourier(n);
+  const double df = 1.0 / (static_cast<double>(size) * s.dt);
+
+  ArtificialComponent c;
+  std::vector<double> control = s.control_periods;
+  std::sort(control.begin(), control.end());
+  for (double t : control)
+    c.target.push_back(target(t));
+  // Matching periods: the control periods and half a decade beyond.
+  std::vector<double> match = control;
+  match.insert(match.begin(), control.front() / std::sqrt(10.0));
+  match.push_back(std::min(control.back() * std::sqrt(10.0), s.duration / 2));
+  std::vector<double> target_match, correction;
+  for (double t : match)
+    target_match.push_back(target(t));
+
+  std::vector<double> amplitude(synthesis.bins(), 0.0),
+      phase(synthesis.bins(), 0.0);
+  initial_process(match, target_match, s.damping, df, seed, amplitude, phase);
+  if (size % 2 == 0)
+    amplitude.back() = 0.0; // no Nyquist term
+
+  // Phase 1, frequency domain (SIMQKE, 5 iterations): the stationary
+  // process x the envelope, its Fourier amplitudes corrected by the
+  // spectral ratio. Phase 2, time domain: wavelets added to that record
+  // where each period peaks (and, when that stalls, one frequency-domain
+  // correction of the record, which moves the peaks). Every iteration's
+  // record, brought to rest by an envelope-shaped correction and to the
+  // design PGA by zero-area pulses, is a candidate; the best is kept.
+  // (Phase 2 works on the record without the end correction: chasing it,
+  // the long-period wavelets stall.)
+  constexpr int frequency_iterations = 5;
+  std::vector<double> a(n), shape(n);
+  for (std::size_t k = 0; k < n; ++k)
+    shape[k] = s.envelope(s.dt * static_cast<double>(k));
+  const double pga = target.pga();
+  Deviation best;
+  for (int it = 1; it <= s.max_iterations; ++it)
+  {
+    if (it <= frequency_iterations)
+    {
+      const std::vector<double>& x = synthesis.run(amplitude, phase);
+      for (std::size_t k = 0; k < n; ++k)
+        a[k] = x[k] * shape[k];
+    }
+    else if (it - c.iterations > 3)
+      fourier.apply(a, s.dt,
+                    [&](double f)
+                    { return interpolate_log(match, correction, 1.0 / f); });
+    else
+      wavelet_adjust(a, s.dt, control, c.target, s.damping);
+
+    std::vector<double> candidate = a;
+    end_at_rest(candidate, s.dt, shape);
+    set_peak(candidate, pga, s.dt);
+    const Deviation d =
+        deviation(response_spectrum(candidate, s.dt, match, s.damping),
+                  target_match, correction);
+    if (d.worst < best.worst)
+    {
+      best = d;
+      c.acceleration = candidate;
+      c.iterations = it;
+    }
+    if (d.worst <= s.tolerance)
+      break;
+    if (it < frequency_iterations)
+      for (std::size_t k = 1; k < amplitude.size(); ++k)
+        amplitude[k] *= interpolate_log(match, correction,
+                                        1.0 / (df * static_cast<double>(k)));
+    else if (it == frequency_iterations)
+      a = candidate;
+    else
+      set_peak(a, pga, s.dt);
+  }
+  c.worst_ratio = best.ratio;
+  c.worst_period = best.period;
+  c.accepted = best.worst <= s.tolerance;
+  c.spectrum = response_spectrum(c.acceleration, s.dt, control, s.damping);
+  c.measures = measures(c.acceleration, s.dt);
+  return c;
+}
+
+double correlation(const std::vector<double>& x, const std::vector<double>& y)
+{
+  const std::size_t n = std::min(x.size(), y.size());
+  if (n < 2)
+    return 0.0;
+  double mx = 0, my = 0;
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    mx += x[k];
+    my += y[k];
+  }
+  mx /= static_cast<double>(n);
+  my /= static_cast<double>(n);
+  double sxy = 0, sxx = 0, syy = 0;
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    sxy += (x[k] - mx) * (y[k] - my);
+    sxx += (x[k] - mx) * (x[k] - mx);
+    syy += (y[k] - my) * (y[k] - my);
+  }
+  return sxx > 0 && syy > 0 ? sxy / std::sqrt(sxx * syy) : 0.0;
+}
+
+ArtificialMotion generate_motion(const std::vector<DesignSpectrum>& targets,
+                                 const ArtificialSettings& s)
+{
+  ArtificialMotion m;
+  // Independent random streams: seeds spread by a 64-bit mix of the
+  // user's seed, the component and the attempt.
+  auto stream = [&](std::size_t component, int attempt)
+  {
+    std::seed_seq seq{static_cast<std::uint32_t>(s.seed),
+                      static_cast<std::uint32_t>(s.seed >> 32),
+                      static_cast<std::uint32_t>(component),
+                      static_cast<std::uint32_t>(attempt)};
+    std::uint64_t out[1];
+    std::uint32_t words[2];
+    seq.generate(words, words + 2);
+    out[0] = (static_cast<std::uint64_t>(words[0]) << 32) | words[1];
+    return out[0];
+  };
+  for (std::size_t i = 0; i < targets.size(); ++i)
+  {
+    ArtificialComponent c;
+    for (int attempt = 0; attempt < 50; ++attempt)
+    {
+      c = generate_component(targets[i], s, stream(i, attempt));
+      bool independent = true;
+      for (const auto& other : m.components)
+        independent =
+            independent &&
+            std::abs(correlation(c.acceleration, other.acceleration)) <=
+                s.max_correlation;
+      if (independent)
+        break;
+    }
+    m.components.push_back(std::move(c));
+  }
+  m.accepted = true;
+  for (const auto& c : m.components)
+    m.accepted = m.accepted && c.accepted;
+  for (std::size_t i = 0; i < m.components.size(); ++i)
+    for (std::size_t j = i + 1; j < m.components.size(); ++j)
+    {
+      const double r = correlation(m.components[i].acceleration,
+                                   m.components[j].acceleration);
+      m.correlations.push_back(r);
+      m.accepted = m.accepted && std::abs(r) <= s.max_correlation;
+    }
+  return m;
+}
+} // namespace damseis::motion
