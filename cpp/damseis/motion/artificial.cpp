@@ -51,6 +51,11 @@ void check(const ArtificialSettings& s)
           "damping " + num(s.damping) + "; expected 0 < damping < 1");
   require(s.tolerance > 0 && s.tolerance < 1,
           "tolerance " + num(s.tolerance) + "; expected 0 < tolerance < 1");
+  require(s.attempts >= 1 && s.attempts <= 100,
+          "attempts " + std::to_string(s.attempts) + "; expected 1 to 100");
+  require(s.max_correlation > 0 && s.max_correlation <= 1,
+          "max_correlation " + num(s.max_correlation) +
+              "; expected 0 < max_correlation <= 1");
   require(s.max_iterations >= 1 && s.max_iterations <= 1000,
           "max_iterations " + std::to_string(s.max_iterations) +
               "; expected 1 to 1000");
@@ -329,7 +334,11 @@ void wavelet_adjust(std::vector<double>& a, double dt,
     for (std::size_t j = 0; j < m; ++j)
     {
       const Oscillator& o = osc[j];
-      if (stop[j] <= k0 * o.substeps)
+      // An oscillator far from the wavelet's period hardly responds to it
+      // (the wavelet is narrow-band): C_ij is left 0 beyond a factor 4
+      // (the iterations absorb the neglected coupling).
+      if (stop[j] <= k0 * o.substeps ||
+          std::abs(std::log(periods[i] / periods[j])) > std::log(4.0))
         continue;
       double u = 0, v = 0;
       const long reached = o.run(x, k0, k1, stop[j], u, v);
@@ -550,20 +559,33 @@ ArtificialMotion generate_motion(const std::vector<DesignSpectrum>& targets,
   };
   for (std::size_t i = 0; i < targets.size(); ++i)
   {
-    ArtificialComponent c;
-    for (int attempt = 0; attempt < 50; ++attempt)
+    bool best_independent = false;
+    // New phases (another stream) for a component that is correlated with
+    // an earlier one or that did not match; the best match is kept.
+    ArtificialComponent best;
+    for (int attempt = 0; attempt < s.attempts; ++attempt)
     {
-      c = generate_component(targets[i], s, stream(i, attempt));
+      ArtificialComponent c =
+          generate_component(targets[i], s, stream(i, attempt));
       bool independent = true;
       for (const auto& other : m.components)
         independent =
             independent &&
             std::abs(correlation(c.acceleration, other.acceleration)) <=
                 s.max_correlation;
-      if (independent)
+      const bool better =
+          best.acceleration.empty() || (independent && !best_independent) ||
+          (independent == best_independent &&
+           std::abs(c.worst_ratio - 1) < std::abs(best.worst_ratio - 1));
+      if (better)
+      {
+        best = std::move(c);
+        best_independent = independent;
+      }
+      if (best_independent && best.accepted)
         break;
     }
-    m.components.push_back(std::move(c));
+    m.components.push_back(std::move(best));
   }
   m.accepted = true;
   for (const auto& c : m.components)

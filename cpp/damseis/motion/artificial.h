@@ -49,9 +49,13 @@ struct ArtificialSettings
   /// Acceptance: |Sa / target - 1| <= tolerance at every control period.
   double tolerance = 0.10;
   int max_iterations = 60;
-  /// Largest |correlation| between components; phases are drawn again
-  /// (up to 50 times) for a component that exceeds it.
+  /// Largest |correlation| between components (US NRC SRP 3.7.1: 0.16;
+  /// ASCE 4: 0.3).
   double max_correlation = 0.16;
+  /// New phases are drawn (up to this many times) for a component that is
+  /// correlated above max_correlation with an earlier one or that does not
+  /// match within the tolerance.
+  int attempts = 10;
   int baseline_degree = 6;
 };
 
