@@ -430,6 +430,12 @@ ArtificialComponent generate_component(const DesignSpectrum& target,
                                        std::uint64_t seed)
 {
   check(s);
+  if (!(target.min_period() <= s.control_periods.front() &&
+        target.max_period() >= s.control_periods.back()))
+    throw std::invalid_argument("the target spectrum is defined from " +
+                                num(target.min_period()) + " to " +
+                                num(target.max_period()) +
+                                " s; expected it to cover the control periods");
   const auto n = static_cast<std::size_t>(std::llround(s.duration / s.dt)) + 1;
   const std::size_t size = fast_size(n);
   Synthesis synthesis(size);
@@ -443,8 +449,10 @@ ArtificialComponent generate_component(const DesignSpectrum& target,
     c.target.push_back(target(t));
   // Matching periods: the control periods and half a decade beyond.
   std::vector<double> match = control;
-  match.insert(match.begin(), control.front() / std::sqrt(10.0));
-  match.push_back(std::min(control.back() * std::sqrt(10.0), s.duration / 2));
+  match.insert(match.begin(), std::max(control.front() / std::sqrt(10.0),
+                                       target.min_period()));
+  match.push_back(std::min(
+      {control.back() * std::sqrt(10.0), s.duration / 2, target.max_period()}));
   std::vector<double> target_match, correction;
   for (double t : match)
     target_match.push_back(target(t));
@@ -454,6 +462,15 @@ ArtificialComponent generate_component(const DesignSpectrum& target,
   initial_process(match, target_match, s.damping, df, seed, amplitude, phase);
   if (size % 2 == 0)
     amplitude.back() = 0.0; // no Nyquist term
+  // No content far beyond the longest control period: a Butterworth
+  // high-pass (order 4, |H|^2) at 2.5 times it. Without it the process
+  // keeps the target's growth G ~ Sa^2 / w towards f = 0 and the records
+  // wander by metres (PGD 6.8 m at 0.321 g, measured) while ending at rest.
+  const double f_high_pass = 1.0 / (1.5 * control.back());
+  auto high_pass = [&](double f)
+  { return 1.0 / (1.0 + std::pow(f_high_pass / f, 8)); };
+  for (std::size_t k = 1; k < amplitude.size(); ++k)
+    amplitude[k] *= high_pass(df * static_cast<double>(k));
 
   // Phase 1, frequency domain (SIMQKE, 5 iterations): the stationary
   // process x the envelope, its Fourier amplitudes corrected by the
@@ -480,8 +497,10 @@ ArtificialComponent generate_component(const DesignSpectrum& target,
     }
     else if (it - c.iterations > 3)
       fourier.apply(a, s.dt,
-                    [&](double f)
-                    { return interpolate_log(match, correction, 1.0 / f); });
+                    [&](double f) {
+                      return interpolate_log(match, correction, 1.0 / f) *
+                             high_pass(f);
+                    });
     else
       wavelet_adjust(a, s.dt, control, c.target, s.damping);
 

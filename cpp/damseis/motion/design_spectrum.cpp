@@ -134,8 +134,12 @@ DesignSpectrum::DesignSpectrum(const DesignSpectrumSettings& s) : s_(s)
     if (!(beta_max_ >= 1.0 && beta_max_ <= 5.0))
       bad("beta_max = " + num(beta_max_) + "; expected 1 <= beta_max <= 5");
     gamma_ = dl ? 0.9 : 0.6;
-    // Vertical design acceleration: 2/3 of the horizontal.
-    a_ = s.vertical ? 2.0 / 3.0 * s.pga : s.pga;
+    // Vertical design acceleration: 2/3 of the horizontal (DL 5073-2000
+    // §4.3.3, NB 35047-2015 the same), or the given ratio.
+    if (!(s.vertical_ratio > 0 && s.vertical_ratio <= 1.5))
+      bad("vertical ratio " + num(s.vertical_ratio) +
+          "; expected 0 < ratio <= 1.5");
+    a_ = s.vertical ? s.vertical_ratio * s.pga : s.pga;
     break;
   }
   case SpectrumCode::ec8_type1:
@@ -247,6 +251,16 @@ double DesignSpectrum::operator()(double period) const
     return (1 - w) * sa[i - 1] + w * sa[i];
   }
   }
+}
+
+double DesignSpectrum::min_period() const
+{
+  return s_.code == SpectrumCode::table ? s_.table_period.front() : 0.0;
+}
+
+double DesignSpectrum::max_period() const
+{
+  return s_.code == SpectrumCode::table ? s_.table_period.back() : HUGE_VAL;
 }
 
 double DesignSpectrum::pga() const

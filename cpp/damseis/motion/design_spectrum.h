@@ -42,10 +42,11 @@ struct DesignSpectrumSettings
   /// Chinese codes, a_g for Eurocode 8 (ground type A); for a table the
   /// PGA of the motion (0: the table's Sa at T = 0, which it must give).
   double pga = 0.0;
-  /// Vertical component: the Chinese codes take 2/3 of the horizontal
-  /// design acceleration with the same beta(T); Eurocode 8 its vertical
-  /// spectrum (Table 3.4).
+  /// Vertical component: the Chinese codes take vertical_ratio (2/3) of
+  /// the horizontal design acceleration with the same beta(T); Eurocode 8
+  /// its vertical spectrum (Table 3.4).
   bool vertical = false;
+  double vertical_ratio = 2.0 / 3.0;
   /// Overrides of the code tables (Chinese codes), if given.
   std::optional<double> tg, beta_max;
   /// Viscous damping ratio (Eurocode 8's eta; the Chinese spectra are
@@ -74,6 +75,10 @@ public:
   double corner_period() const { return tg_; }
   /// beta_max of the Chinese codes (0 otherwise).
   double beta_max() const { return beta_max_; }
+  /// Periods where the spectrum is defined: [0, inf) for the codes, the
+  /// table's range for a table.
+  double min_period() const;
+  double max_period() const;
   /// One line, e.g. "NB 35047-2015, arch dam, site I1 (Tg 0.30 s, beta_max
   /// 2.50), a = 3.15 m/s2, horizontal".
   std::string describe() const;

@@ -465,6 +465,42 @@ Record read_record(const std::filesystem::path& file, Units units,
   return r;
 }
 
+void write_columns(const std::filesystem::path& file, const Record& r)
+{
+  std::ofstream out(file);
+  out << "# " << r.description << "\n# time_s acceleration_m_s2\n";
+  char line[64];
+  for (std::size_t k = 0; k < r.acceleration.size(); ++k)
+  {
+    std::snprintf(line, sizeof line, "%.6f %.9g\n",
+                  r.dt * static_cast<double>(k), r.acceleration[k]);
+    out << line;
+  }
+  if (!out)
+    throw std::runtime_error("cannot write " + file.string());
+}
+
+void write_at2(const std::filesystem::path& file, const Record& r)
+{
+  std::ofstream out(file);
+  out << r.description << "\n"
+      << "written by damseis (motion::write_at2)\n"
+      << "ACCELERATION TIME SERIES IN UNITS OF G\n";
+  char line[96];
+  std::snprintf(line, sizeof line, "NPTS= %zu, DT= %.6f SEC\n",
+                r.acceleration.size(), r.dt);
+  out << line;
+  for (std::size_t k = 0; k < r.acceleration.size(); ++k)
+  {
+    std::snprintf(line, sizeof line, "%15.7E",
+                  r.acceleration[k] / standard_gravity);
+    out << line
+        << ((k + 1) % 5 == 0 || k + 1 == r.acceleration.size() ? "\n" : "");
+  }
+  if (!out)
+    throw std::runtime_error("cannot write " + file.string());
+}
+
 std::vector<double> resample(const Record& r, double dt, double duration)
 {
   if (!(dt > 0) || !std::isfinite(dt))

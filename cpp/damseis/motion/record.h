@@ -95,6 +95,16 @@ Record read_record(const std::filesystem::path& file, Units units,
                    Format format = Format::automatic,
                    double dt_for_one_column = 0.0);
 
+/// Writes @p r as two columns "time_s acceleration_m_s2" (a '#' header
+/// line with its description), 9 significant digits; read_record reads it
+/// back (columns, m/s2).
+void write_columns(const std::filesystem::path& file, const Record& r);
+
+/// Writes @p r as a PEER-style AT2 file in g: three header lines (the
+/// description first), "NPTS= n, DT= dt SEC", then 5 values per line
+/// (%15.7E); read_record reads it back (at2, g).
+void write_at2(const std::filesystem::path& file, const Record& r);
+
 /// Linearly interpolates @p r onto the uniform grid t_k = k*dt,
 /// k = 0..n-1, n = floor(duration/dt + 1e-9) + 1. Beyond the end of the
 /// record the value is 0 (quiet after the record).
