@@ -5,6 +5,7 @@
 #include <damseis/analysis/gravity_dam_case.h>
 #include <damseis/checkpoint/checkpoint_file.h>
 #include <damseis/material/material_point_case.h>
+#include <damseis/motion/ground_motion_case.h>
 #include <damseis/results/progress.h>
 #include <fstream>
 #include <set>
@@ -340,6 +341,19 @@ std::vector<Target> all_targets(const fs::path& source_dir,
           check_all_finite(p.state.stress, "stress");
           check_all_finite(p.strain, "strain");
         }
+      }));
+  targets.push_back(case_target<motion::GroundMotionConfig>(
+      "case_ground_motion", motion::ground_motion_schema(),
+      files_in(demos / "ground_motion", ".toml"),
+      motion::read_ground_motion_config, scratch,
+      [](const motion::GroundMotionConfig& g)
+      {
+        // The targets at the control periods, and the records read.
+        for (const auto& t : g.targets)
+          for (double p : g.generation.control_periods)
+            check_finite(t(p), "target spectrum");
+        for (const auto& r : g.records)
+          check_all_finite(r.record.acceleration, "record value");
       }));
   targets.push_back(record_target(true, source_dir, scratch));
   targets.push_back(record_target(false, source_dir, scratch));

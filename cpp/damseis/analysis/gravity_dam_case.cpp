@@ -73,6 +73,7 @@ input::Schema gravity_dam_schema()
       .at_least(0)
       .at_most(10000);
   add_seismic_keys(s, gravity_dam_directions(), "[0.0, 103.0]", "[0.0, 0.0]");
+  s.set_default("design.dam", "\"gravity\"");
   add_concrete_keys(s);
   s.real("silt.level", "0.0", "m",
          "elevation of the silt surface against the upstream face (0: no "

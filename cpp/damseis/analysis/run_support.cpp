@@ -479,6 +479,7 @@ json seismic_summary(MPI_Comm comm, const fem::ElasticModel& fe,
   {
     motion[std::string(1, axis[i])] = {
         {"record", s.motion[i].record},
+        {"description", s.motion[i].description},
         {"peak_g", s.motion[i].active ? s.motion[i].peak_g : 0.0}};
   }
   // Components driven by one record file are one fully correlated signal

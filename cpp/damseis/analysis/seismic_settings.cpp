@@ -1,8 +1,10 @@
 #include "seismic_settings.h"
 #include <cmath>
+#include <damseis/motion/ground_motion_case.h>
 #include <damseis/motion/record.h>
 #include <damseis/results/output_folder.h>
 #include <damseis/results/progress.h>
+#include <map>
 #include <sstream>
 
 namespace damseis::analysis
@@ -45,6 +47,11 @@ void add_seismic_keys(input::Schema& s,
   for (const Direction& d : directions)
   {
     const std::string p = "motion." + d.name;
+    s.string(p + ".source", "record", "-",
+             d.name + " motion: a record file (motion." + d.name +
+                 ".record), or an artificial record matched to the design "
+                 "spectrum ([design])",
+             {"record", "generated"});
     s.string(p + ".record", d.default_record, "-",
              d.name +
                  " record: PEER .at2 or one/two-column text (empty: none)");
@@ -60,6 +67,9 @@ void add_seismic_keys(input::Schema& s,
            "peak acceleration after scaling (0: unscaled)")
         .between(0, 5.0);
   }
+  // The design motion of generated components (ground_motion's keys).
+  motion::add_target_keys(s, "design");
+  motion::add_generation_keys(s, "design");
   s.integer("output.every", "10", "-", "steps between XDMF field outputs")
       .at_least(1);
   s.string("output.stress", "total", "-", "stresses in envelopes and summary",
@@ -105,40 +115,109 @@ constexpr double max_steps = 1e7;
          "(time.duration = 0 runs the whole record)");
 }
 
+/// The generated components of the case (source = "generated"), matched to
+/// [design]: horizontal directions to the horizontal target, the vertical
+/// (component dim - 1) to the vertical one; independent streams of
+/// design.seed in the directions' order.
+std::map<std::string, motion::Record>
+generated_motions(const input::Case& c,
+                  const std::vector<Direction>& directions, int dim)
+{
+  std::vector<const Direction*> generated;
+  for (const Direction& d : directions)
+    if (c.string("motion." + d.name + ".source") == "generated")
+      generated.push_back(&d);
+  if (generated.empty())
+    return {};
+  const motion::ArtificialSettings settings =
+      motion::read_generation(c, "design");
+  std::vector<motion::DesignSpectrum> targets;
+  for (const Direction* d : generated)
+  {
+    const std::string key = "motion." + d->name + ".peak_g";
+    if (c.is_set(key) && c.real(key) > 0)
+      results::warn(MPI_COMM_WORLD,
+                    key + " is not used: the generated record has the design "
+                          "acceleration (design.pga_g)");
+    targets.push_back(
+        motion::read_target(c, "design", d->component == dim - 1));
+    const auto& t = settings.control_periods;
+    if (!(targets.back().min_period() <= t.front() &&
+          targets.back().max_period() >= t.back()))
+      c.fail("design.table_period", "does not cover the control periods",
+             "a table over design.period_min to design.period_max");
+  }
+  const motion::ArtificialMotion m = motion::generate_motion(targets, settings);
+  std::map<std::string, motion::Record> out;
+  for (std::size_t i = 0; i < generated.size(); ++i)
+  {
+    const auto& comp = m.components[i];
+    motion::Record r;
+    r.dt = settings.dt;
+    r.acceleration = comp.acceleration;
+    std::ostringstream description;
+    description.precision(3);
+    description << "artificial record (seed " << settings.seed << ", "
+                << targets[i].describe() << "; spectrum within "
+                << 100 * (comp.worst_ratio - 1) << "% at " << comp.worst_period
+                << " s)";
+    r.description = description.str();
+    if (!comp.accepted)
+      results::warn(MPI_COMM_WORLD,
+                    "motion." + generated[i]->name +
+                        ": the generated record is not within design."
+                        "tolerance of the design spectrum (" +
+                        r.description + ")");
+    out.emplace(generated[i]->name, std::move(r));
+  }
+  return out;
+}
+
 GroundMotion read_motion(const input::Case& c, const std::string& p, double dt,
-                         double duration)
+                         double duration,
+                         const std::map<std::string, motion::Record>& generated)
 {
   GroundMotion gm;
-  if (c.string(p + ".record").empty())
+  const auto it = generated.find(p.substr(p.find('.') + 1));
+  if (it == generated.end() && c.string(p + ".record").empty())
     return gm;
   const auto file = c.path(p + ".record");
   motion::Record r;
-  try
+  if (it != generated.end())
+    r = it->second;
+  else
   {
-    r = motion::read_record(file, motion::parse_units(c.string(p + ".units")),
-                            motion::parse_format(c.string(p + ".format")),
-                            c.real(p + ".dt"));
-  }
-  catch (const motion::RecordError& e)
-  {
-    // The record error already says what is wrong and what is expected.
-    throw input::InputError(c.file().string() + ": " + p +
-                            ".record: " + e.what());
+    try
+    {
+      r = motion::read_record(file, motion::parse_units(c.string(p + ".units")),
+                              motion::parse_format(c.string(p + ".format")),
+                              c.real(p + ".dt"));
+    }
+    catch (const motion::RecordError& e)
+    {
+      // The record error already says what is wrong and what is expected.
+      throw input::InputError(c.file().string() + ": " + p +
+                              ".record: " + e.what());
+    }
   }
   gm.active = true;
-  gm.record = file.string();
+  const bool made = it != generated.end();
+  gm.record = made ? "generated (" + it->first + ", design.seed " +
+                         std::to_string(c.integer("design.seed")) + ")"
+                   : file.string();
+  const std::string shown =
+      made ? "the generated record" : file.filename().string();
   gm.description = r.description;
   // The whole record is scaled to the target peak (so a run shorter than
   // the record sees the same signal), then resampled; duration < 0 means the
   // record's own length.
-  gm.peak_g = c.real(p + ".peak_g");
+  gm.peak_g = made ? 0.0 : c.real(p + ".peak_g");
   // An unscaled record must be a ground acceleration (a record in cm/s2
   // read as g is not).
   if (gm.peak_g == 0.0 && r.peak() > 5.0 * motion::standard_gravity)
   {
     std::ostringstream problem;
-    problem << file.filename().string() << " peaks at "
-            << r.peak() / motion::standard_gravity
+    problem << shown << " peaks at " << r.peak() / motion::standard_gravity
             << " g, not a ground acceleration";
     c.fail(p + ".record", problem.str(),
            "a record in the units of " + p +
@@ -169,8 +248,8 @@ GroundMotion read_motion(const input::Case& c, const std::string& p, double dt,
   if (duration > r.duration())
   {
     std::ostringstream w;
-    w << p << ".record " << file.filename().string() << " lasts "
-      << r.duration() << " s, time.duration is " << duration
+    w << p << ": " << shown << " lasts " << r.duration()
+      << " s, time.duration is " << duration
       << " s: the ground acceleration is zero after " << r.duration() << " s";
     results::warn(MPI_COMM_WORLD, w.str());
   }
@@ -245,10 +324,11 @@ SeismicSettings read_seismic_settings(const input::Case& c,
   g.scheme.alpha = c.real("time.hht_alpha");
   const double duration = c.real("time.duration");
   bool any = false;
+  const auto generated = generated_motions(c, directions, dim);
   for (const Direction& d : directions)
   {
     GroundMotion m = read_motion(c, "motion." + d.name, g.scheme.dt,
-                                 duration > 0 ? duration : -1.0);
+                                 duration > 0 ? duration : -1.0, generated);
     any = any || m.active;
     g.motion[d.component] = std::move(m);
   }
