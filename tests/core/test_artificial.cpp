@@ -93,4 +93,8 @@ TEST(Artificial, BadSettingsThrow)
   s = ArtificialSettings{};
   s.control_periods = {0.01}; // below 2 dt
   EXPECT_THROW(generate_component(h, s, 1), std::invalid_argument);
+  s = ArtificialSettings{};
+  s.duration = 600; // 60,001 samples x 100 periods: hours, refused
+  s.envelope.strong_end = 300;
+  EXPECT_THROW(generate_component(h, s, 1), std::invalid_argument);
 }

@@ -121,6 +121,11 @@ TEST(DesignSpectrum, TableIsLinearAndBounded)
   EXPECT_NEAR(t(0.05), 3.5, 1e-12);
   EXPECT_NEAR(t(0.55), 3.0, 1e-12);
   EXPECT_THROW(t(2.0), std::out_of_range);
+  // The vertical motion of a table: vertical_ratio x the table.
+  s.vertical = true;
+  s.vertical_ratio = 0.5;
+  EXPECT_NEAR(DesignSpectrum(s)(0.05), 1.75, 1e-12);
+  EXPECT_NEAR(DesignSpectrum(s).pga(), 1.0, 1e-12);
 }
 
 TEST(DesignSpectrum, BadSettingsThrowNamingTheValue)

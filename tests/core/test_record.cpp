@@ -386,3 +386,35 @@ TEST(RecordErrors, ImplausibleStepOverflowAndUnusablePath)
   const fs::path long_path = fs::temp_directory_path() / std::string(5000, 'x');
   EXPECT_THROW(read_record(long_path, Units::g), RecordError);
 }
+
+// Review fixes: the writers keep a step like 1/300 s exactly enough for the
+// readers' uniform-sampling check (1e-6), and a device is refused (reading
+// /dev/zero would never end).
+TEST(RecordWriters, RoundTripWithAnAwkwardStep)
+{
+  Record r;
+  r.dt = 1.0 / 300.0;
+  for (int k = 0; k < 1000; ++k)
+    r.acceleration.push_back(std::sin(0.01 * k) * 2.0);
+  r.description = "round trip";
+  const fs::path txt = fs::temp_directory_path() / "damseis_rt.txt";
+  const fs::path at2 = fs::temp_directory_path() / "damseis_rt.at2";
+  write_columns(txt, r);
+  write_at2(at2, r);
+  const Record a = read_record(txt, Units::m_per_s2);
+  const Record b = read_record(at2, Units::g);
+  ASSERT_EQ(a.acceleration.size(), r.acceleration.size());
+  ASSERT_EQ(b.acceleration.size(), r.acceleration.size());
+  EXPECT_NEAR(a.dt, r.dt, 1e-12);
+  EXPECT_NEAR(b.dt, r.dt, 1e-12);
+  for (std::size_t k = 0; k < r.acceleration.size(); ++k)
+  {
+    EXPECT_NEAR(a.acceleration[k], r.acceleration[k], 1e-8);
+    EXPECT_NEAR(b.acceleration[k], r.acceleration[k], 1e-6); // 8 digits in g
+  }
+}
+
+TEST(RecordErrors, DeviceIsRefused)
+{
+  expect_record_error("/dev/zero", "not a regular file");
+}

@@ -214,6 +214,9 @@ TEST(Spectrum, BadArgumentsThrow)
                std::invalid_argument);
   EXPECT_THROW(response_spectrum(a, 0.01, std::vector<double>{1.0}, 1.0),
                std::invalid_argument);
+  // A period far below the step would need 10^5 sub-steps per sample.
+  EXPECT_THROW(response_spectrum(a, 0.01, std::vector<double>{1e-5}, 0.05),
+               std::invalid_argument);
   const auto s = response_spectrum(a, 0.01, std::vector<double>{0.0}, 0.05);
   EXPECT_EQ(s.psa[0], 1.0); // T = 0: the PGA
 }

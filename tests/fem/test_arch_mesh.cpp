@@ -428,14 +428,19 @@ TEST(ArchGeometry, DistanceFromModelCylinder)
   auto distance = [&](double x, double y, double z) {
     return damseis::geometry::distance_from_model(g, {x, y, z});
   };
-  EXPECT_EQ(distance(0, 4, 25), 0.0);            // in the crown
-  EXPECT_EQ(distance(70, 0, 25), 0.0);           // in the right bank
-  EXPECT_EQ(distance(0, 0, -10), 0.0);           // below the floor
-  EXPECT_NEAR(distance(0, -10, 25), 10, 1e-9);   // upstream: 114 - 104
-  EXPECT_NEAR(distance(0, 20, 40), 12, 1e-9);    // downstream: 96 - 84
-  EXPECT_NEAR(distance(0, 40, 25), 25, 1e-9);    // nearer the floor
-  EXPECT_NEAR(distance(0, 0, H + 30), 30, 1e-9); // above the crest
-  EXPECT_NEAR(distance(200, 0, 25), 90, 1e-9);   // beyond the box x = 110
+  EXPECT_EQ(distance(0, 4, 25), 0.0);          // in the crown
+  EXPECT_EQ(distance(70, 0, 25), 0.0);         // in the right bank
+  EXPECT_EQ(distance(0, 0, -10), 0.0);         // below the floor
+  EXPECT_NEAR(distance(0, -10, 25), 10, 1e-9); // upstream: 114 - 104
+  EXPECT_NEAR(distance(0, 20, 40), 12, 1e-9);  // downstream: 96 - 84
+  EXPECT_NEAR(distance(0, 40, 25), 25, 1e-9);  // nearer the floor
+  // Above the crest at the crown: 30 m above the box, and the box's top
+  // there is in the dam (the crest): 30.
+  EXPECT_NEAR(distance(0, 4, H + 30), 30, 1e-9);
+  // Above the valley's air downstream of the crest (y = 20, z = H + 30):
+  // hypot(30, distance at the box top = 96 - 84 = 12).
+  EXPECT_NEAR(distance(0, 20, H + 30), std::hypot(30.0, 12.0), 1e-9);
+  EXPECT_NEAR(distance(200, 0, 25), 90, 1e-9); // beyond the box x = 110
 }
 
 TEST(ArchGeometry, PresetsAndBadInput)

@@ -29,9 +29,31 @@ const std::string* current_input = nullptr;
 char crash_file[4096] = {};
 const char* crash_reason = "";
 
+/// Async-signal-safe name of the signals handled.
+const char* signal_name(int sig)
+{
+  switch (sig)
+  {
+  case SIGALRM:
+    return "hang (timeout)";
+  case SIGSEGV:
+    return "segmentation fault";
+  case SIGABRT:
+    return "abort";
+  case SIGFPE:
+    return "floating-point exception";
+  case SIGBUS:
+    return "bus error";
+  case SIGILL:
+    return "illegal instruction";
+  default:
+    return "signal";
+  }
+}
+
 void save_and_exit(int sig)
 {
-  const char* what = sig == SIGALRM ? "hang (timeout)" : strsignal(sig);
+  const char* what = signal_name(sig);
   const int fd = ::open(crash_file, O_WRONLY | O_CREAT | O_TRUNC, 0644);
   if (fd >= 0 && current_input)
   {
@@ -109,6 +131,7 @@ Tally fuzz(const Target& t, long runs, std::uint64_t seed, int timeout,
       ++tally.findings;
     }
     alarm(0);
+    current_input = nullptr; // `input` ends with this iteration
     tally.slowest = std::max(
         tally.slowest,
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start)

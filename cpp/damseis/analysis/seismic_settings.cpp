@@ -5,6 +5,7 @@
 #include <damseis/results/output_folder.h>
 #include <damseis/results/progress.h>
 #include <map>
+#include <mpi.h>
 #include <sstream>
 
 namespace damseis::analysis
@@ -130,7 +131,7 @@ generated_motions(const input::Case& c,
   if (generated.empty())
     return {};
   const motion::ArtificialSettings settings =
-      motion::read_generation(c, "design");
+      motion::read_generation(c, "design", "design");
   std::vector<motion::DesignSpectrum> targets;
   for (const Direction* d : generated)
   {
@@ -147,26 +148,51 @@ generated_motions(const input::Case& c,
       c.fail("design.table_period", "does not cover the control periods",
              "a table over design.period_min to design.period_max");
   }
-  const motion::ArtificialMotion m = motion::generate_motion(targets, settings);
+  // Generated on rank 0 and broadcast: every rank drives the model with
+  // the same samples (FFTW's code paths can depend on buffer alignment, so
+  // independent generations could differ in the last bits).
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  std::vector<std::vector<double>> samples(generated.size());
+  std::vector<double> worst(generated.size()), at(generated.size());
+  std::vector<int> accepted(generated.size());
+  if (rank == 0)
+  {
+    const auto m = motion::generate_motion(targets, settings);
+    for (std::size_t i = 0; i < generated.size(); ++i)
+    {
+      samples[i] = m.components[i].acceleration;
+      worst[i] = m.components[i].worst_ratio;
+      at[i] = m.components[i].worst_period;
+      accepted[i] = m.components[i].accepted;
+    }
+  }
+  const auto n = static_cast<int>(generated.size());
+  MPI_Bcast(worst.data(), n, MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  MPI_Bcast(at.data(), n, MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  MPI_Bcast(accepted.data(), n, MPI_INT, 0, MPI_COMM_WORLD);
   std::map<std::string, motion::Record> out;
   for (std::size_t i = 0; i < generated.size(); ++i)
   {
-    const auto& comp = m.components[i];
+    auto length = static_cast<long long>(samples[i].size());
+    MPI_Bcast(&length, 1, MPI_LONG_LONG, 0, MPI_COMM_WORLD);
+    samples[i].resize(static_cast<std::size_t>(length));
+    MPI_Bcast(samples[i].data(), static_cast<int>(length), MPI_DOUBLE, 0,
+              MPI_COMM_WORLD);
     motion::Record r;
     r.dt = settings.dt;
-    r.acceleration = comp.acceleration;
+    r.acceleration = std::move(samples[i]);
     std::ostringstream description;
     description.precision(3);
     description << "artificial record (seed " << settings.seed << ", "
                 << targets[i].describe() << "; spectrum within "
-                << 100 * (comp.worst_ratio - 1) << "% at " << comp.worst_period
-                << " s)";
+                << 100 * (worst[i] - 1) << "% at " << at[i] << " s)";
     r.description = description.str();
-    if (!comp.accepted)
+    if (!accepted[i])
       results::warn(MPI_COMM_WORLD,
                     "motion." + generated[i]->name +
-                        ": the generated record is not within design."
-                        "tolerance of the design spectrum (" +
+                        ": the generated record is not within "
+                        "design.tolerance of the design spectrum (" +
                         r.description + ")");
     out.emplace(generated[i]->name, std::move(r));
   }

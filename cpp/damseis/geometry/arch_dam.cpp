@@ -721,18 +721,24 @@ ModelBox model_box(const ArchDamGeometry& g)
 double distance_from_model(const ArchDamGeometry& g,
                            const std::array<double, 3>& p)
 {
-  const auto [x, y, z] = p;
+  // The point clamped into the model box, then: in the rock, 0; in the
+  // valley (water or air), the distance to the dam body (along the
+  // centre-line normal) or to the nearer wall or the floor. A point outside
+  // the box adds its distance to the box (Pythagoras: the two offsets are
+  // nearly orthogonal).
   const ModelBox b = model_box(g);
-  const double dx = std::max({b.x0 - x, x - b.x1, 0.0});
-  const double dy = std::max({b.y0 - y, y - b.y1, 0.0});
-  const double dz = std::max({b.z0 - z, z - b.z1, 0.0});
-  if (dx > 0 || dy > 0 || dz > 0)
-    return std::sqrt(dx * dx + dy * dy + dz * dz);
+  const double x = std::clamp(p[0], b.x0, b.x1);
+  const double y = std::clamp(p[1], b.y0, b.y1);
+  const double z = std::clamp(p[2], b.z0, b.z1);
+  const double outside = std::hypot(p[0] - x, p[1] - y, p[2] - z);
+  double inside = 0.0;
   const double left = x - g.x_left(z), right = g.x_right(z) - x;
-  if (z <= 0 || left <= 0 || right <= 0)
-    return 0.0; // in the rock
-  const auto [off, theta] = g.offset(z, x, y);
-  const double to_dam = std::abs(off) - 0.5 * g.thickness(z, theta);
-  return std::max(0.0, std::min({to_dam, left, right, z}));
+  if (z > 0 && left > 0 && right > 0)
+  {
+    const auto [off, theta] = g.offset(z, x, y);
+    const double to_dam = std::abs(off) - 0.5 * g.thickness(z, theta);
+    inside = std::max(0.0, std::min({to_dam, left, right, z}));
+  }
+  return std::hypot(outside, inside);
 }
 } // namespace damseis::geometry

@@ -47,6 +47,13 @@ void check(const ArtificialSettings& s)
   for (double t : s.control_periods)
     require(t > 2 * s.dt && t <= s.duration / 2,
             "control period " + num(t) + " s; expected 2 dt < T <= duration/2");
+  // Work bound: about 60 spectra and wavelet systems of this size per
+  // component (10^6 samples x periods: seconds; the default is 2 x 10^5).
+  const double work =
+      (s.duration / s.dt + 1) * static_cast<double>(s.control_periods.size());
+  require(work <= 2e6, "duration / dt x control periods = " + num(work) +
+                           "; expected at most 2e6 (a larger dt, a shorter "
+                           "duration or fewer periods)");
   require(s.damping > 0 && s.damping < 1,
           "damping " + num(s.damping) + "; expected 0 < damping < 1");
   require(s.tolerance > 0 && s.tolerance < 1,
@@ -59,20 +66,6 @@ void check(const ArtificialSettings& s)
   require(s.max_iterations >= 1 && s.max_iterations <= 1000,
           "max_iterations " + std::to_string(s.max_iterations) +
               "; expected 1 to 1000");
-}
-
-/// Fast FFT size >= n (factors 2, 3, 5).
-std::size_t fast_size(std::size_t n)
-{
-  for (std::size_t m = n;; ++m)
-  {
-    std::size_t r = m;
-    for (std::size_t p : {2, 3, 5})
-      while (r % p == 0)
-        r /= p;
-    if (r == 1)
-      return m;
-  }
 }
 
 /// Linear interpolation of y(log T) at log t, clamped at the ends.
@@ -135,7 +128,7 @@ class FourierGain
 {
 public:
   explicit FourierGain(std::size_t n)
-      : n_(n), size_(fast_size(2 * n)), bins_(size_ / 2 + 1), x_(size_),
+      : n_(n), size_(fast_fft_size(2 * n)), bins_(size_ / 2 + 1), x_(size_),
         c_(static_cast<fftw_complex*>(
                fftw_malloc(sizeof(fftw_complex) * bins_)),
            &fftw_free)
@@ -398,6 +391,8 @@ Deviation deviation(const Spectrum& sp, const std::vector<double>& target,
   {
     correction[i] = target[i] / sp.psa[i];
     const double r = sp.psa[i] / target[i];
+    if (!std::isfinite(r) || !std::isfinite(correction[i]))
+      return {HUGE_VAL, r, sp.period[i]}; // never accepted
     if (i > 0 && i + 1 < target.size() && std::abs(r - 1) > d.worst)
       d = {std::abs(r - 1), r, sp.period[i]};
   }
@@ -437,7 +432,7 @@ ArtificialComponent generate_component(const DesignSpectrum& target,
                                 num(target.max_period()) +
                                 " s; expected it to cover the control periods");
   const auto n = static_cast<std::size_t>(std::llround(s.duration / s.dt)) + 1;
-  const std::size_t size = fast_size(n);
+  const std::size_t size = fast_fft_size(n);
   Synthesis synthesis(size);
   FourierGain fourier(n);
   const double df = 1.0 / (static_cast<double>(size) * s.dt);
@@ -463,7 +458,7 @@ ArtificialComponent generate_component(const DesignSpectrum& target,
   if (size % 2 == 0)
     amplitude.back() = 0.0; // no Nyquist term
   // No content far beyond the longest control period: a Butterworth
-  // high-pass (order 4, |H|^2) at 2.5 times it. Without it the process
+  // high-pass (order 4, |H|^2) at 1.5 times it. Without it the process
   // keeps the target's growth G ~ Sa^2 / w towards f = 0 and the records
   // wander by metres (PGD 6.8 m at 0.321 g, measured) while ending at rest.
   const double f_high_pass = 1.0 / (1.5 * control.back());
@@ -487,6 +482,7 @@ ArtificialComponent generate_component(const DesignSpectrum& target,
     shape[k] = s.envelope(s.dt * static_cast<double>(k));
   const double pga = target.pga();
   Deviation best;
+  int last_fourier = 0;
   for (int it = 1; it <= s.max_iterations; ++it)
   {
     if (it <= frequency_iterations)
@@ -495,12 +491,15 @@ ArtificialComponent generate_component(const DesignSpectrum& target,
       for (std::size_t k = 0; k < n; ++k)
         a[k] = x[k] * shape[k];
     }
-    else if (it - c.iterations > 3)
+    else if (it - c.iterations > 3 && it - last_fourier > 3)
+    {
+      last_fourier = it;
       fourier.apply(a, s.dt,
                     [&](double f) {
                       return interpolate_log(match, correction, 1.0 / f) *
                              high_pass(f);
                     });
+    }
     else
       wavelet_adjust(a, s.dt, control, c.target, s.damping);
 

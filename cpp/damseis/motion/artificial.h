@@ -56,7 +56,6 @@ struct ArtificialSettings
   /// correlated above max_correlation with an earlier one or that does not
   /// match within the tolerance.
   int attempts = 10;
-  int baseline_degree = 6;
 };
 
 struct ArtificialComponent

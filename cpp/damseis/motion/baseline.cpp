@@ -1,6 +1,7 @@
 #include "baseline.h"
 #include "spectrum.h"
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <fftw3.h>
@@ -19,10 +20,11 @@ std::string num(double x)
   return s.str();
 }
 
-/// A size with small prime factors, >= n (fast FFT sizes).
-std::size_t fast_size(std::size_t n)
+} // namespace
+
+std::size_t fast_fft_size(std::size_t n)
 {
-  for (std::size_t m = n;; ++m)
+  for (std::size_t m = std::max<std::size_t>(n, 1);; ++m)
   {
     std::size_t r = m;
     for (std::size_t p : {2, 3, 5})
@@ -32,7 +34,6 @@ std::size_t fast_size(std::size_t n)
       return m;
   }
 }
-} // namespace
 
 void remove_displacement_trend(std::vector<double>& a, double dt, int degree)
 {
@@ -139,6 +140,9 @@ void butterworth_bandpass(std::vector<double>& a, double dt, double f_low,
     throw std::invalid_argument("band-pass " + num(f_low) + " - " +
                                 num(f_high) +
                                 " Hz; expected 0 <= f_low < f_high");
+  if (f_low > 0 && f_low < 1e-3)
+    throw std::invalid_argument("band-pass low corner " + num(f_low) +
+                                " Hz; expected 0 (none) or at least 0.001");
   if (order < 1 || order > 16)
     throw std::invalid_argument("Butterworth order " + std::to_string(order) +
                                 "; expected 1 to 16");
@@ -149,7 +153,7 @@ void butterworth_bandpass(std::vector<double>& a, double dt, double f_low,
   // about order / f_low (both directions).
   const double ring = f_low > 0 ? 2.0 * order / f_low : 0.0;
   const std::size_t size =
-      fast_size(2 * n + static_cast<std::size_t>(std::ceil(ring / dt)));
+      fast_fft_size(2 * n + static_cast<std::size_t>(std::ceil(ring / dt)));
   std::vector<double> x(size, 0.0);
   std::copy(a.begin(), a.end(), x.begin());
   const std::size_t bins = size / 2 + 1;

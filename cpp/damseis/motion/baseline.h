@@ -4,6 +4,7 @@
 /// near zero), and a zero-phase Butterworth band-pass (FFTW).
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 namespace damseis::motion
@@ -13,8 +14,8 @@ namespace damseis::motion
 /// end with the record's displacement and velocity, and subtracts the fit's
 /// second derivative from `a`: the corrected motion still starts at rest
 /// (no t^0, t^1 terms) and ends with zero velocity and displacement (to
-/// round-off). 3 <= degree <= 8. The basis is in t / t_end; Eigen's QR
-/// solves the constrained fit (null-space method).
+/// O(dt^2): the removed polynomial is sampled). 3 <= degree <= 8. The basis is
+/// in t / t_end; Eigen's QR solves the constrained fit (null-space method).
 void remove_displacement_trend(std::vector<double>& a, double dt,
                                int degree = 6);
 
@@ -27,6 +28,9 @@ void remove_displacement_trend(std::vector<double>& a, double dt,
 /// (a shape whose two moments are dependent).
 void end_at_rest(std::vector<double>& a, double dt,
                  const std::vector<double>& shape);
+
+/// The smallest n' >= n whose prime factors are 2, 3 and 5 (fast FFT sizes).
+std::size_t fast_fft_size(std::size_t n);
 
 /// Zero-phase Butterworth band-pass of order `order` (per direction: the
 /// gain is |H|^2, as a forward-backward filter): gain

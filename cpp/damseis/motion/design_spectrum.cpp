@@ -175,6 +175,9 @@ DesignSpectrum::DesignSpectrum(const DesignSpectrumSettings& s) : s_(s)
   }
   case SpectrumCode::table:
   {
+    if (!(s.vertical_ratio > 0 && s.vertical_ratio <= 1.5))
+      bad("vertical ratio " + num(s.vertical_ratio) +
+          "; expected 0 < ratio <= 1.5");
     const auto& t = s.table_period;
     const auto& sa = s.table_sa;
     if (t.size() < 2 || t.size() != sa.size())
@@ -248,7 +251,8 @@ double DesignSpectrum::operator()(double period) const
     const std::size_t i = std::clamp<std::size_t>(
         static_cast<std::size_t>(it - p.begin()), 1, p.size() - 1);
     const double w = (t - p[i - 1]) / (p[i] - p[i - 1]);
-    return (1 - w) * sa[i - 1] + w * sa[i];
+    return ((1 - w) * sa[i - 1] + w * sa[i]) *
+           (s_.vertical ? s_.vertical_ratio : 1.0);
   }
   }
 }
@@ -265,7 +269,9 @@ double DesignSpectrum::max_period() const
 
 double DesignSpectrum::pga() const
 {
-  return s_.code == SpectrumCode::table && s_.pga > 0 ? s_.pga : (*this)(0.0);
+  return s_.code == SpectrumCode::table && s_.pga > 0
+             ? s_.pga * (s_.vertical ? s_.vertical_ratio : 1.0)
+             : (*this)(0.0);
 }
 
 std::string DesignSpectrum::describe() const

@@ -42,9 +42,9 @@ struct DesignSpectrumSettings
   /// Chinese codes, a_g for Eurocode 8 (ground type A); for a table the
   /// PGA of the motion (0: the table's Sa at T = 0, which it must give).
   double pga = 0.0;
-  /// Vertical component: the Chinese codes take vertical_ratio (2/3) of
-  /// the horizontal design acceleration with the same beta(T); Eurocode 8
-  /// its vertical spectrum (Table 3.4).
+  /// Vertical component: the Chinese codes and tables take vertical_ratio
+  /// (2/3) of the horizontal spectrum; Eurocode 8 its vertical spectrum
+  /// (Table 3.4).
   bool vertical = false;
   double vertical_ratio = 2.0 / 3.0;
   /// Overrides of the code tables (Chinese codes), if given.
@@ -52,8 +52,8 @@ struct DesignSpectrumSettings
   /// Viscous damping ratio (Eurocode 8's eta; the Chinese spectra are
   /// for 5%).
   double damping = 0.05;
-  /// SpectrumCode::table: periods (increasing, s) and Sa (m/s2), taken as
-  /// they are (`vertical` does not scale them).
+  /// SpectrumCode::table: periods (increasing, s) and Sa (m/s2) of the
+  /// horizontal motion; `vertical` scales them by vertical_ratio.
   std::vector<double> table_period, table_sa;
 };
 

@@ -121,9 +121,15 @@ void add_generation_keys(input::Schema& s, const std::string& p)
       .between(2, 1000);
 }
 
-ArtificialSettings read_generation(const input::Case& c, const std::string& p)
+ArtificialSettings read_generation(const input::Case& c, const std::string& p,
+                                   const std::string& target)
 {
   ArtificialSettings s;
+  // The records are matched at the damping of the target spectrum:
+  // Eurocode 8's (its eta), 5% for the Chinese codes and tables.
+  const auto code = parse_spectrum_code(c.string(target + ".code"));
+  if (code == SpectrumCode::ec8_type1 || code == SpectrumCode::ec8_type2)
+    s.damping = c.real(target + ".damping");
   s.duration = c.real(p + ".duration");
   s.dt = c.real(p + ".dt");
   s.seed = static_cast<std::uint64_t>(c.integer(p + ".seed"));
@@ -184,7 +190,7 @@ input::Schema ground_motion_schema()
       .above(0)
       .below(1);
   s.real("spectra.period_min", "0.02", "s", "spectrum task: shortest period")
-      .above(0);
+      .at_least(0.005);
   s.real("spectra.period_max", "10.0", "s", "spectrum task: longest period")
       .above(0)
       .at_most(100);
@@ -212,7 +218,7 @@ GroundMotionConfig read_ground_motion_config(const input::Case& c)
   }
   if (g.generate)
   {
-    g.generation = read_generation(c, "generate");
+    g.generation = read_generation(c, "generate", "target");
     const auto& t = g.generation.control_periods;
     if (!(g.targets[0].min_period() <= t.front() &&
           g.targets[0].max_period() >= t.back()))

@@ -26,8 +26,11 @@ DesignSpectrum read_target(const input::Case& c, const std::string& prefix,
 /// Keys <prefix>.duration, .dt, .seed, .rise, .strong_end, .decay,
 /// .tolerance, .max_correlation, .period_min, .period_max, .periods.
 void add_generation_keys(input::Schema& schema, const std::string& prefix);
+/// The generation settings; the matching damping is the target's
+/// (`target` is the prefix of its keys): Eurocode 8's, else 5%.
 ArtificialSettings read_generation(const input::Case& c,
-                                   const std::string& prefix);
+                                   const std::string& prefix,
+                                   const std::string& target);
 
 /// The names of the generated components, in order: two horizontal and the
 /// vertical.

@@ -274,7 +274,9 @@ Record read_at2(const std::filesystem::path& file)
   std::size_t npts = 0;
   parse_at2_header(file, lines[3], npts, r.dt);
 
-  r.acceleration.reserve(npts);
+  // NPTS is checked against the values found below: reserve no more than
+  // the lines can hold.
+  r.acceleration.reserve(std::min<std::size_t>(npts, 16 * lines.size()));
   std::size_t found = 0;
   for (std::size_t l = 4; l < lines.size(); ++l)
   {
@@ -444,6 +446,10 @@ Record read_record(const std::filesystem::path& file, Units units,
   std::error_code ec; // e.g. a name too long for the file system
   if (std::filesystem::is_regular_file(file, ec))
     require_text(file);
+  else if (std::filesystem::exists(file, ec) &&
+           !std::filesystem::is_directory(file, ec))
+    fail(file, "is not a regular file (a device or a pipe); expected a "
+               "ground-motion record file");
   Record r = format == Format::at2 ? read_at2(file)
                                    : read_columns(file, dt_for_one_column);
   if (!(r.dt <= max_record_dt))
@@ -472,7 +478,7 @@ void write_columns(const std::filesystem::path& file, const Record& r)
   char line[64];
   for (std::size_t k = 0; k < r.acceleration.size(); ++k)
   {
-    std::snprintf(line, sizeof line, "%.6f %.9g\n",
+    std::snprintf(line, sizeof line, "%.12g %.9g\n",
                   r.dt * static_cast<double>(k), r.acceleration[k]);
     out << line;
   }
@@ -487,7 +493,7 @@ void write_at2(const std::filesystem::path& file, const Record& r)
       << "written by damseis (motion::write_at2)\n"
       << "ACCELERATION TIME SERIES IN UNITS OF G\n";
   char line[96];
-  std::snprintf(line, sizeof line, "NPTS= %zu, DT= %.6f SEC\n",
+  std::snprintf(line, sizeof line, "NPTS= %zu, DT= %.12g SEC\n",
                 r.acceleration.size(), r.dt);
   out << line;
   for (std::size_t k = 0; k < r.acceleration.size(); ++k)

@@ -138,8 +138,11 @@ Spectrum response_spectrum(std::span<const double> a, double dt,
       continue;
     }
     const double w = 2.0 * std::numbers::pi / period;
-    const int substeps = std::max(
-        1, static_cast<int>(std::ceil(samples_per_period * dt / period)));
+    const double wanted = std::ceil(samples_per_period * dt / period);
+    require(wanted <= 1e4, "period " + text(period) +
+                               " s is too short for the record's step " +
+                               text(dt) + " s; expected at least dt / 150");
+    const int substeps = std::max(1, static_cast<int>(wanted));
     const double d =
         Sdof(period, damping, dt / substeps).peak_displacement(a, substeps);
     s.sd.push_back(d);
