@@ -22,7 +22,7 @@ StressEnvelope::StressEnvelope(const dolfinx::fem::FunctionSpace& S,
   _x.resize(n);
   for (std::int32_t i = 0; i < n; ++i)
     _x[i] = {x[3 * i], x[3 * i + 1], x[3 * i + 2]};
-  _in_region.assign(n, region_cells.empty() ? 1 : 0);
+  _in_region.assign(n, 0);
   for (std::int32_t c : region_cells)
   {
     for (std::int32_t d : dofmap.cell_dofs(c))

@@ -25,10 +25,12 @@ class StressEnvelope
 {
 public:
   /// @param[in] S stress-point space (blocked by the number of components)
-  /// @param[in] region_cells optional list of local cells to restrict the
-  /// extremes to (e.g. the dam); empty means every cell.
+  /// @param[in] region_cells the local cells whose points are tracked (e.g.
+  /// the dam's); a rank may own none of them: it then tracks no point.
+  /// (An empty list once meant "every cell": a rank without dam cells then
+  /// reported the foundation's extremes on 2 ranks.)
   StressEnvelope(const dolfinx::fem::FunctionSpace& S,
-                 std::span<const std::int32_t> region_cells = {});
+                 std::span<const std::int32_t> region_cells);
   /// Points given explicitly (e.g. quadrature points, whose space cannot
   /// tabulate coordinates): `ncomp` stress components per point, the
   /// coordinates `x` (3 per owned point) and a region flag per owned point.
