@@ -319,6 +319,15 @@ TEST(RecordScale, ZeroRecordThrows)
   EXPECT_THROW(scale_to_peak(zeros, 1.0), RecordError);
   std::vector<double> empty;
   EXPECT_THROW(scale_to_peak(empty, 1.0), RecordError);
+  // Found by fuzzing: a denormal peak made the factor infinite and -0 x
+  // inf = NaN passed through; such a record is zeros and round-off.
+  std::vector<double> tiny = {5e-324, -0.0};
+  EXPECT_THROW(scale_to_peak(tiny, 1.0), RecordError);
+  std::vector<double> small = {2e-10, -0.0, -1e-10};
+  scale_to_peak(small, 3.0);
+  EXPECT_EQ(small[0], 3.0);
+  EXPECT_EQ(small[1], 0.0);
+  EXPECT_DOUBLE_EQ(small[2], -1.5);
 }
 
 TEST(RecordBaseline, RemovesPolynomials)

@@ -557,15 +557,19 @@ void scale_to_peak(std::vector<double>& a, double target_peak)
   double peak = 0;
   for (const double v : a)
     peak = std::max(peak, std::abs(v));
-  if (!(peak > 0))
-    throw RecordError("cannot scale a record that is all zero to peak " +
-                      fmt(target_peak) + "; expected a nonzero record");
-  const double factor = target_peak / peak;
+  // A peak below 1e-10 m/s2 (1e-11 g) is a record of zeros and round-off:
+  // scaling it would blow noise up by 1e10 or more (and a denormal peak
+  // made the factor infinite, -0 x inf = NaN: found by fuzzing).
+  if (!(peak > 1e-10))
+    throw RecordError("cannot scale a record whose peak is " + fmt(peak) +
+                      " m/s2 to peak " + fmt(target_peak) +
+                      "; expected a nonzero record");
   for (double& v : a)
   {
     // Samples at the peak are set to the target exactly; the clamp keeps
-    // rounding from pushing any other sample above it.
-    const double scaled = v * factor;
+    // rounding from pushing any other sample above it. (v / peak) * target
+    // cannot overflow.
+    const double scaled = v / peak * target_peak;
     if (std::abs(v) == peak || std::abs(scaled) > target_peak)
       v = std::copysign(target_peak, v);
     else
