@@ -16,7 +16,7 @@
 /// NB 35047-2015 arch-dam spectrum); the wavelets act on the peaks
 /// themselves and keep the record's nonstationary shape (they are local
 /// in time), and converge within +-10% at all 100 control periods for 20
-/// of 20 seeds (bench/results/ground-motion-*.md).
+/// of 20 seeds (bench/results/ground-motion-2026-11-26.md).
 #pragma once
 
 #include "design_spectrum.h"
