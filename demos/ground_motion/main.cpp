@@ -11,7 +11,7 @@
 #include <cstdlib>
 #include <damseis/case/command_line.h>
 #include <damseis/motion/ground_motion_output.h>
-#include <damseis/results/output_folder.h>
+#include <damseis/results/core_demo.h>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -63,54 +63,31 @@ void plot(const std::filesystem::path& out)
     std::fprintf(stderr, "ground_motion: warning: plotting failed: %s\n",
                  cmd.c_str());
 }
+
+/// The phases of the task.
+int run(const input::Case&, const motion::GroundMotionConfig& cfg,
+        const std::filesystem::path& out)
+{
+  int status = 0;
+  if (cfg.generate)
+    status = generate(cfg, out);
+  else
+  {
+    motion::write_record_spectra(out, cfg);
+    std::printf("spectra of %zu records at %zu periods -> %s\n",
+                cfg.records.size(), cfg.periods.size(),
+                (out / "spectra.csv").c_str());
+  }
+  if (cfg.plots)
+    plot(out);
+  return status;
+}
 } // namespace
 
 int main(int argc, char** argv)
 {
-  const auto start = std::filesystem::file_time_type::clock::now();
-  std::optional<std::filesystem::path> folder;
-  int status = 0;
-  try
-  {
-    const input::Schema schema = motion::ground_motion_schema();
-    const auto cl = input::parse_command_line(
-        argc, argv, "ground_motion",
-        DAMSEIS_SOURCE_DIR "/demos/ground_motion/ground_motion.toml", schema);
-    if (!cl)
-      return 0;
-    const auto c = input::Case::load(schema, cl->case_file, cl->overrides);
-    const auto cfg = motion::read_ground_motion_config(c);
-    results::check_output_folder(cl->out_dir);
-    const std::string line = results::prepare_output_folder(
-        cl->out_dir, results::parse_overwrite(c.string("output.overwrite")));
-    if (!line.empty())
-      std::printf("%s\n", line.c_str());
-    folder = cl->out_dir;
-    std::filesystem::create_directories(cl->out_dir);
-    std::ofstream(cl->out_dir / "case_used.toml") << c.to_toml();
-    if (cfg.generate)
-      status = generate(cfg, cl->out_dir);
-    else
-    {
-      motion::write_record_spectra(cl->out_dir, cfg);
-      std::printf("spectra of %zu records at %zu periods -> %s\n",
-                  cfg.records.size(), cfg.periods.size(),
-                  (cl->out_dir / "spectra.csv").c_str());
-    }
-    if (cfg.plots)
-      plot(cl->out_dir);
-  }
-  catch (const input::InputError& e)
-  {
-    std::fprintf(stderr, "ground_motion: error: %s\n", e.what());
-    status = 2;
-  }
-  catch (const std::exception& e)
-  {
-    std::fprintf(stderr, "ground_motion: internal error: %s\n", e.what());
-    status = 1;
-  }
-  if (folder)
-    damseis::results::write_manifest(*folder, start, false);
-  return status;
+  return results::core_demo_main<motion::GroundMotionConfig>(
+      argc, argv, "ground_motion",
+      DAMSEIS_SOURCE_DIR "/demos/ground_motion/ground_motion.toml",
+      motion::ground_motion_schema(), motion::read_ground_motion_config, run);
 }

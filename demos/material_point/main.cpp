@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <damseis/case/command_line.h>
 #include <damseis/material/material_point_case.h>
-#include <damseis/results/output_folder.h>
+#include <damseis/results/core_demo.h>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -23,8 +23,6 @@ int run(const input::Case& c, const material::MaterialPointConfig& cfg,
 {
   const material::HtcConcrete model(cfg.material);
   const auto result = material::run_path(model, cfg.segments);
-  std::filesystem::create_directories(out_dir);
-  std::ofstream(out_dir / "case_used.toml") << c.to_toml();
   const auto csv = out_dir / cfg.csv_name;
   {
     std::ofstream out(csv);
@@ -66,42 +64,9 @@ int run(const input::Case& c, const material::MaterialPointConfig& cfg,
 
 int main(int argc, char** argv)
 {
-  const auto start = std::filesystem::file_time_type::clock::now();
-  std::optional<std::filesystem::path> folder;
-  int status = 0;
-  try
-  {
-    const input::Schema schema = material::material_point_schema();
-    const auto cl = input::parse_command_line(
-        argc, argv, "material_point",
-        DAMSEIS_SOURCE_DIR "/demos/material_point/material_point.toml", schema);
-    if (!cl)
-      return 0;
-    const auto c = input::Case::load(schema, cl->case_file, cl->overrides);
-    const auto cfg = material::read_material_point_config(c);
-    results::check_output_folder(cl->out_dir);
-    const std::string line = results::prepare_output_folder(
-        cl->out_dir, results::parse_overwrite(c.string("output.overwrite")));
-    if (!line.empty())
-      std::printf("%s\n", line.c_str());
-    folder = cl->out_dir;
-    if (c.keys_in_file() == 0)
-      std::printf("warning: %s gives no keys: every value is a default or a "
-                  "--set override\n",
-                  c.file().c_str());
-    status = run(c, cfg, cl->out_dir);
-  }
-  catch (const input::InputError& e)
-  {
-    std::fprintf(stderr, "material_point: error: %s\n", e.what());
-    status = 2;
-  }
-  catch (const std::exception& e)
-  {
-    std::fprintf(stderr, "material_point: internal error: %s\n", e.what());
-    status = 1;
-  }
-  if (folder)
-    results::write_manifest(*folder, start, false);
-  return status;
+  return results::core_demo_main<material::MaterialPointConfig>(
+      argc, argv, "material_point",
+      DAMSEIS_SOURCE_DIR "/demos/material_point/material_point.toml",
+      material::material_point_schema(), material::read_material_point_config,
+      run);
 }

@@ -378,9 +378,11 @@ void check_joints(const ArchModel& am, std::size_t njoints)
 } // namespace
 
 //-----------------------------------------------------------------------------
-TEST(ArchGeometry, CylinderAnalytic)
+/// A circular arch of constant thickness T and centre-line radius R
+/// between vertical walls x = +-X, height H (the crown's upstream face at
+/// y = 0).
+static ArchDamDefinition cylinder_dam(double H, double X, double R, double T)
 {
-  const double H = 50, X = 60, R = 100, T = 8;
   ArchDamDefinition d;
   d.dam.height = H;
   d.dam.levels = {0, H};
@@ -393,7 +395,13 @@ TEST(ArchGeometry, CylinderAnalytic)
   d.canyon.z = {0, H};
   d.canyon.x_left = {-X, -X};
   d.canyon.x_right = {X, X};
-  const ArchDamGeometry g(d);
+  return d;
+}
+
+TEST(ArchGeometry, CylinderAnalytic)
+{
+  const double H = 50, X = 60, R = 100, T = 8;
+  const ArchDamGeometry g(cylinder_dam(H, X, R, T));
   auto F = [&](double r)
   { return X * std::sqrt(r * r - X * X) + r * r * std::asin(X / r); };
   const double ru = R + T / 2, rd = R - T / 2;
@@ -412,19 +420,7 @@ TEST(ArchGeometry, CylinderAnalytic)
 TEST(ArchGeometry, DistanceFromModelCylinder)
 {
   const double H = 50, X = 60, R = 100, T = 8;
-  ArchDamDefinition d;
-  d.dam.height = H;
-  d.dam.levels = {0, H};
-  d.dam.crown_upstream_y = {0, 0};
-  d.dam.crown_thickness = {T, T};
-  d.dam.abutment_thickness = {T, T};
-  d.dam.shape = ArchShape::circular;
-  d.dam.radius_central = {R, R};
-  d.canyon.shape = CanyonShape::points;
-  d.canyon.z = {0, H};
-  d.canyon.x_left = {-X, -X};
-  d.canyon.x_right = {X, X};
-  const ArchDamGeometry g(d);
+  const ArchDamGeometry g(cylinder_dam(H, X, R, T));
   auto distance = [&](double x, double y, double z) {
     return damseis::geometry::distance_from_model(g, {x, y, z});
   };
