@@ -84,8 +84,9 @@ void generation(const char* name, DesignSpectrumSettings d, int seeds)
 
 int main(int argc, char** argv)
 {
-  const std::string record =
-      argc > 1 ? argv[1] : DAMSEIS_SOURCE_DIR "/data/records/elcentro_1940_ns.at2";
+  const std::string record = argc > 1 ? argv[1]
+                                      : DAMSEIS_SOURCE_DIR
+                                 "/data/records/elcentro_1940_ns.at2";
   std::printf("| task | measured | target |\n|---|---|---|\n");
   spectrum_speed(record);
   DesignSpectrumSettings nb;

@@ -142,11 +142,6 @@ generated_motions(const input::Case& c,
                           "acceleration (design.pga_g)");
     targets.push_back(
         motion::read_target(c, "design", d->component == dim - 1));
-    const auto& t = settings.control_periods;
-    if (!(targets.back().min_period() <= t.front() &&
-          targets.back().max_period() >= t.back()))
-      c.fail("design.table_period", "does not cover the control periods",
-             "a table over design.period_min to design.period_max");
   }
   // Generated on rank 0 and broadcast: every rank drives the model with
   // the same samples (FFTW's code paths can depend on buffer alignment, so

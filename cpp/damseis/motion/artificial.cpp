@@ -1,5 +1,6 @@
 #include "artificial.h"
 #include "baseline.h"
+#include "message.h"
 #include "record.h"
 #include <Eigen/Dense>
 #include <algorithm>
@@ -18,54 +19,48 @@ namespace
 {
 constexpr double pi = std::numbers::pi;
 
-void require(bool ok, const std::string& what)
-{
-  if (!ok)
-    throw std::invalid_argument(what);
-}
-
-std::string num(double x)
-{
-  std::ostringstream s;
-  s << x;
-  return s.str();
-}
-
 void check(const ArtificialSettings& s)
 {
-  require(s.dt > 0 && s.dt <= 0.05,
-          "time step " + num(s.dt) + " s; expected 0 < dt <= 0.05");
-  require(s.duration >= 10 * s.dt && s.duration <= 600,
-          "duration " + num(s.duration) + " s; expected 10 dt to 600 s");
+  require_argument(s.dt > 0 && s.dt <= 0.05, "time step " + number_text(s.dt) +
+                                                 " s; expected 0 < dt <= 0.05");
+  require_argument(s.duration >= 10 * s.dt && s.duration <= 600,
+                   "duration " + number_text(s.duration) +
+                       " s; expected 10 dt to 600 s");
   const Envelope& e = s.envelope;
-  require(e.rise > 0 && e.strong_end > e.rise && e.strong_end < s.duration &&
-              e.decay > 0,
-          "envelope rise " + num(e.rise) + " s, strong_end " +
-              num(e.strong_end) + " s, decay " + num(e.decay) +
-              " 1/s; expected 0 < rise < strong_end < duration, decay > 0");
-  require(!s.control_periods.empty(), "no control periods");
+  require_argument(
+      e.rise > 0 && e.strong_end > e.rise && e.strong_end < s.duration &&
+          e.decay > 0,
+      "envelope rise " + number_text(e.rise) + " s, strong_end " +
+          number_text(e.strong_end) + " s, decay " + number_text(e.decay) +
+          " 1/s; expected 0 < rise < strong_end < duration, decay > 0");
+  require_argument(!s.control_periods.empty(), "no control periods");
   for (double t : s.control_periods)
-    require(t > 2 * s.dt && t <= s.duration / 2,
-            "control period " + num(t) + " s; expected 2 dt < T <= duration/2");
+    require_argument(t > 2 * s.dt && t <= s.duration / 2,
+                     "control period " + number_text(t) +
+                         " s; expected 2 dt < T <= duration/2");
   // Work bound: about 60 spectra and wavelet systems of this size per
   // component (10^6 samples x periods: seconds; the default is 2 x 10^5).
   const double work =
       (s.duration / s.dt + 1) * static_cast<double>(s.control_periods.size());
-  require(work <= 2e6, "duration / dt x control periods = " + num(work) +
-                           "; expected at most 2e6 (a larger dt, a shorter "
-                           "duration or fewer periods)");
-  require(s.damping > 0 && s.damping < 1,
-          "damping " + num(s.damping) + "; expected 0 < damping < 1");
-  require(s.tolerance > 0 && s.tolerance < 1,
-          "tolerance " + num(s.tolerance) + "; expected 0 < tolerance < 1");
-  require(s.attempts >= 1 && s.attempts <= 100,
-          "attempts " + std::to_string(s.attempts) + "; expected 1 to 100");
-  require(s.max_correlation > 0 && s.max_correlation <= 1,
-          "max_correlation " + num(s.max_correlation) +
-              "; expected 0 < max_correlation <= 1");
-  require(s.max_iterations >= 1 && s.max_iterations <= 1000,
-          "max_iterations " + std::to_string(s.max_iterations) +
-              "; expected 1 to 1000");
+  require_argument(work <= 2e6,
+                   "duration / dt x control periods = " + number_text(work) +
+                       "; expected at most 2e6 (a larger dt, a shorter "
+                       "duration or fewer periods)");
+  require_argument(s.damping > 0 && s.damping < 1,
+                   "damping " + number_text(s.damping) +
+                       "; expected 0 < damping < 1");
+  require_argument(s.tolerance > 0 && s.tolerance < 1,
+                   "tolerance " + number_text(s.tolerance) +
+                       "; expected 0 < tolerance < 1");
+  require_argument(s.attempts >= 1 && s.attempts <= 100,
+                   "attempts " + std::to_string(s.attempts) +
+                       "; expected 1 to 100");
+  require_argument(s.max_correlation > 0 && s.max_correlation <= 1,
+                   "max_correlation " + number_text(s.max_correlation) +
+                       "; expected 0 < max_correlation <= 1");
+  require_argument(s.max_iterations >= 1 && s.max_iterations <= 1000,
+                   "max_iterations " + std::to_string(s.max_iterations) +
+                       "; expected 1 to 1000");
 }
 
 /// Linear interpolation of y(log T) at log t, clamped at the ends.
@@ -233,44 +228,18 @@ struct Wavelet
 /// does, so that matching and acceptance see the same peaks).
 struct Oscillator
 {
-  Sdof sdof;
   int substeps;
+  Sdof sdof;
   double w2;
   Oscillator(double period, double beta, double dt)
-      : sdof(period, beta,
-             dt / std::max(1, static_cast<int>(std::ceil(64 * dt / period)))),
-        substeps(std::max(1, static_cast<int>(std::ceil(64 * dt / period)))),
+      : substeps(substeps_for(period, dt)), sdof(period, beta, dt / substeps),
         w2(std::pow(2.0 * pi / period, 2))
   {
   }
-  /// Steps (u, v) over input samples x[k0..] until substep index `stop`
-  /// (counted from sample 0: stop = k * substeps + j) or the last sample;
-  /// returns the substep index reached. `watch`: track the peak |u|.
   long run(const double* x, long k0, long k_last, long stop, double& u,
            double& v, double* peak = nullptr, long* at = nullptr) const
   {
-    long index = k0 * substeps;
-    for (long k = k0; k < k_last && index < stop; ++k)
-    {
-      const double slope = (x[k + 1] - x[k]) / substeps;
-      double a0 = x[k];
-      for (int j = 1; j <= substeps && index < stop; ++j)
-      {
-        const double a1 = j == substeps ? x[k + 1] : x[k] + slope * j;
-        const double un =
-            sdof.a11 * u + sdof.a12 * v + sdof.b11 * a0 + sdof.b12 * a1;
-        v = sdof.a21 * u + sdof.a22 * v + sdof.b21 * a0 + sdof.b22 * a1;
-        u = un;
-        a0 = a1;
-        ++index;
-        if (peak && std::abs(u) > *peak)
-        {
-          *peak = std::abs(u);
-          *at = index;
-        }
-      }
-    }
-    return index;
+    return sdof.advance(x, k0, k_last, substeps, stop, u, v, peak, at);
   }
 };
 
@@ -428,8 +397,8 @@ ArtificialComponent generate_component(const DesignSpectrum& target,
   if (!(target.min_period() <= s.control_periods.front() &&
         target.max_period() >= s.control_periods.back()))
     throw std::invalid_argument("the target spectrum is defined from " +
-                                num(target.min_period()) + " to " +
-                                num(target.max_period()) +
+                                number_text(target.min_period()) + " to " +
+                                number_text(target.max_period()) +
                                 " s; expected it to cover the control periods");
   const auto n = static_cast<std::size_t>(std::llround(s.duration / s.dt)) + 1;
   const std::size_t size = fast_fft_size(n);

@@ -1,4 +1,5 @@
 #include "baseline.h"
+#include "message.h"
 #include "spectrum.h"
 #include <Eigen/Dense>
 #include <algorithm>
@@ -11,17 +12,6 @@
 
 namespace damseis::motion
 {
-namespace
-{
-std::string num(double x)
-{
-  std::ostringstream s;
-  s << x;
-  return s.str();
-}
-
-} // namespace
-
 std::size_t fast_fft_size(std::size_t n)
 {
   for (std::size_t m = std::max<std::size_t>(n, 1);; ++m)
@@ -41,7 +31,8 @@ void remove_displacement_trend(std::vector<double>& a, double dt, int degree)
     throw std::invalid_argument("baseline polynomial degree " +
                                 std::to_string(degree) + "; expected 3 to 8");
   if (!(dt > 0))
-    throw std::invalid_argument("time step " + num(dt) + " s; expected > 0");
+    throw std::invalid_argument("time step " + number_text(dt) +
+                                " s; expected > 0");
   const std::size_t n = a.size();
   const int m = degree - 1; // terms x^2 .. x^degree, x = t / t_end
   if (n < static_cast<std::size_t>(m) + 2)
@@ -134,14 +125,15 @@ void butterworth_bandpass(std::vector<double>& a, double dt, double f_low,
                           double f_high, int order)
 {
   if (!(dt > 0))
-    throw std::invalid_argument("time step " + num(dt) + " s; expected > 0");
+    throw std::invalid_argument("time step " + number_text(dt) +
+                                " s; expected > 0");
   const double nyquist = 0.5 / dt;
   if (!(f_low >= 0) || !(f_high > f_low) || !std::isfinite(f_low))
-    throw std::invalid_argument("band-pass " + num(f_low) + " - " +
-                                num(f_high) +
+    throw std::invalid_argument("band-pass " + number_text(f_low) + " - " +
+                                number_text(f_high) +
                                 " Hz; expected 0 <= f_low < f_high");
   if (f_low > 0 && f_low < 1e-3)
-    throw std::invalid_argument("band-pass low corner " + num(f_low) +
+    throw std::invalid_argument("band-pass low corner " + number_text(f_low) +
                                 " Hz; expected 0 (none) or at least 0.001");
   if (order < 1 || order > 16)
     throw std::invalid_argument("Butterworth order " + std::to_string(order) +

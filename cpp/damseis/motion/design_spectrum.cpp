@@ -1,4 +1,5 @@
 #include "design_spectrum.h"
+#include "message.h"
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
@@ -13,13 +14,6 @@ namespace
 [[noreturn]] void bad(const std::string& what)
 {
   throw std::invalid_argument(what);
-}
-
-std::string num(double x)
-{
-  std::ostringstream s;
-  s << x;
-  return s.str();
 }
 
 // beta_max by structure type: DL 5073-2000 Table 4.3.5 and NB 35047-2015
@@ -74,7 +68,7 @@ double tg_nb35047(const std::string& site, double tg_map)
                                 [&](const auto& r)
                                 { return std::abs(r.first - tg_map) < 1e-9; });
   if (row == table.end())
-    bad("zoning-map characteristic period " + num(tg_map) +
+    bad("zoning-map characteristic period " + number_text(tg_map) +
         " s is not in GB 18306-2015; expected 0.35, 0.40 or 0.45");
   const auto it = row->second.find(site);
   if (it == row->second.end())
@@ -115,9 +109,9 @@ DesignSpectrum::DesignSpectrum(const DesignSpectrumSettings& s) : s_(s)
 {
   const bool table = s.code == SpectrumCode::table;
   if (!table && (!(s.pga > 0) || !std::isfinite(s.pga)))
-    bad("design acceleration " + num(s.pga) + " m/s2; expected > 0");
+    bad("design acceleration " + number_text(s.pga) + " m/s2; expected > 0");
   if (table && (!(s.pga >= 0) || !std::isfinite(s.pga)))
-    bad("peak ground acceleration " + num(s.pga) +
+    bad("peak ground acceleration " + number_text(s.pga) +
         " m/s2 of a spectrum table; expected >= 0 (0: Sa at T = 0)");
   switch (s.code)
   {
@@ -130,14 +124,15 @@ DesignSpectrum::DesignSpectrum(const DesignSpectrumSettings& s) : s_(s)
                      : tg_nb35047(s.site_class, s.tg_map));
     beta_max_ = s.beta_max ? *s.beta_max : beta_max_of(s.dam);
     if (!(tg_ > 0.1 && tg_ <= 3.0))
-      bad("Tg = " + num(tg_) + " s; expected 0.1 < Tg <= 3");
+      bad("Tg = " + number_text(tg_) + " s; expected 0.1 < Tg <= 3");
     if (!(beta_max_ >= 1.0 && beta_max_ <= 5.0))
-      bad("beta_max = " + num(beta_max_) + "; expected 1 <= beta_max <= 5");
+      bad("beta_max = " + number_text(beta_max_) +
+          "; expected 1 <= beta_max <= 5");
     gamma_ = dl ? 0.9 : 0.6;
     // Vertical design acceleration: 2/3 of the horizontal (DL 5073-2000
     // §4.3.3, NB 35047-2015 the same), or the given ratio.
     if (!(s.vertical_ratio > 0 && s.vertical_ratio <= 1.5))
-      bad("vertical ratio " + num(s.vertical_ratio) +
+      bad("vertical ratio " + number_text(s.vertical_ratio) +
           "; expected 0 < ratio <= 1.5");
     a_ = s.vertical ? s.vertical_ratio * s.pga : s.pga;
     break;
@@ -147,7 +142,8 @@ DesignSpectrum::DesignSpectrum(const DesignSpectrumSettings& s) : s_(s)
   {
     const bool type1 = s.code == SpectrumCode::ec8_type1;
     if (!(s.damping > 0 && s.damping < 1))
-      bad("damping ratio " + num(s.damping) + "; expected 0 < damping < 1");
+      bad("damping ratio " + number_text(s.damping) +
+          "; expected 0 < damping < 1");
     // eta = sqrt(10 / (5 + xi)) >= 0.55, xi in percent (§3.2.2.2(3)).
     eta_ = std::max(0.55, std::sqrt(10.0 / (5.0 + 100.0 * s.damping)));
     if (s.vertical)
@@ -176,7 +172,7 @@ DesignSpectrum::DesignSpectrum(const DesignSpectrumSettings& s) : s_(s)
   case SpectrumCode::table:
   {
     if (!(s.vertical_ratio > 0 && s.vertical_ratio <= 1.5))
-      bad("vertical ratio " + num(s.vertical_ratio) +
+      bad("vertical ratio " + number_text(s.vertical_ratio) +
           "; expected 0 < ratio <= 1.5");
     const auto& t = s.table_period;
     const auto& sa = s.table_sa;
@@ -186,17 +182,17 @@ DesignSpectrum::DesignSpectrum(const DesignSpectrumSettings& s) : s_(s)
           std::to_string(t.size()) + " periods and " +
           std::to_string(sa.size()) + " values");
     if (s.pga == 0 && t.front() != 0)
-      bad("a spectrum table starting at " + num(t.front()) +
+      bad("a spectrum table starting at " + number_text(t.front()) +
           " s and no peak ground acceleration; expected a table from T = 0 "
           "or the PGA");
     for (std::size_t i = 0; i < t.size(); ++i)
     {
       if (!(t[i] >= 0) || (i > 0 && !(t[i] > t[i - 1])))
         bad("spectrum table periods must be >= 0 and increasing (period " +
-            std::to_string(i + 1) + " = " + num(t[i]) + " s)");
+            std::to_string(i + 1) + " = " + number_text(t[i]) + " s)");
       if (!(sa[i] > 0) || !std::isfinite(sa[i]))
         bad("spectrum table value " + std::to_string(i + 1) + " = " +
-            num(sa[i]) + " m/s2; expected > 0");
+            number_text(sa[i]) + " m/s2; expected > 0");
     }
     break;
   }
@@ -206,7 +202,8 @@ DesignSpectrum::DesignSpectrum(const DesignSpectrumSettings& s) : s_(s)
 double DesignSpectrum::operator()(double period) const
 {
   if (!(period >= 0))
-    throw std::invalid_argument("period " + num(period) + " s; expected >= 0");
+    throw std::invalid_argument("period " + number_text(period) +
+                                " s; expected >= 0");
   const double t = period;
   switch (s_.code)
   {
@@ -244,9 +241,9 @@ double DesignSpectrum::operator()(double period) const
     const auto& p = s_.table_period;
     const auto& sa = s_.table_sa;
     if (t < p.front() - 1e-12 || t > p.back() + 1e-12)
-      throw std::out_of_range("period " + num(t) +
-                              " s is outside the spectrum table (" +
-                              num(p.front()) + " to " + num(p.back()) + " s)");
+      throw std::out_of_range(
+          "period " + number_text(t) + " s is outside the spectrum table (" +
+          number_text(p.front()) + " to " + number_text(p.back()) + " s)");
     const auto it = std::upper_bound(p.begin(), p.end(), t);
     const std::size_t i = std::clamp<std::size_t>(
         static_cast<std::size_t>(it - p.begin()), 1, p.size() - 1);

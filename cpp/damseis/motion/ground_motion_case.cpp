@@ -154,6 +154,12 @@ ArtificialSettings read_generation(const input::Case& c, const std::string& p,
            "rise < strong_end < duration");
   s.control_periods =
       log_spaced(t0, t1, static_cast<int>(c.integer(p + ".periods")));
+  // A table target must cover the control periods (the vertical one is
+  // the same table scaled).
+  const DesignSpectrum t = read_target(c, target, false);
+  if (!(t.min_period() <= t0 && t.max_period() >= t1))
+    c.fail(target + ".table_period", "does not cover the control periods",
+           "a table over " + p + ".period_min to " + p + ".period_max");
   return s;
 }
 
@@ -219,11 +225,6 @@ GroundMotionConfig read_ground_motion_config(const input::Case& c)
   if (g.generate)
   {
     g.generation = read_generation(c, "generate", "target");
-    const auto& t = g.generation.control_periods;
-    if (!(g.targets[0].min_period() <= t.front() &&
-          g.targets[0].max_period() >= t.back()))
-      c.fail("target.table_period", "does not cover the control periods",
-             "a table over generate.period_min to generate.period_max");
     return g;
   }
   const double t0 = c.real("spectra.period_min"),

@@ -27,7 +27,8 @@ DesignSpectrum read_target(const input::Case& c, const std::string& prefix,
 /// .tolerance, .max_correlation, .period_min, .period_max, .periods.
 void add_generation_keys(input::Schema& schema, const std::string& prefix);
 /// The generation settings; the matching damping is the target's
-/// (`target` is the prefix of its keys): Eurocode 8's, else 5%.
+/// (`target` is the prefix of its keys): Eurocode 8's, else 5%. A table
+/// target that does not cover the control periods is refused.
 ArtificialSettings read_generation(const input::Case& c,
                                    const std::string& prefix,
                                    const std::string& target);

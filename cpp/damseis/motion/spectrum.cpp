@@ -1,6 +1,8 @@
 #include "spectrum.h"
+#include "message.h"
 #include "record.h"
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -8,30 +10,15 @@
 
 namespace damseis::motion
 {
-namespace
-{
-std::string text(double x)
-{
-  std::ostringstream s;
-  s << x;
-  return s.str();
-}
-
-void require(bool ok, const std::string& what)
-{
-  if (!ok)
-    throw std::invalid_argument(what);
-}
-} // namespace
-
 Sdof::Sdof(double period, double damping, double dt)
 {
-  require(period > 0 && std::isfinite(period),
-          "SDOF period " + text(period) + " s must be > 0");
-  require(damping >= 0 && damping < 1,
-          "damping ratio " + text(damping) + " must be in [0, 1)");
-  require(dt > 0 && std::isfinite(dt),
-          "time step " + text(dt) + " s must be > 0");
+  require_argument(period > 0 && std::isfinite(period),
+                   "SDOF period " + number_text(period) + " s must be > 0");
+  require_argument(damping >= 0 && damping < 1, "damping ratio " +
+                                                    number_text(damping) +
+                                                    " must be in [0, 1)");
+  require_argument(dt > 0 && std::isfinite(dt),
+                   "time step " + number_text(dt) + " s must be > 0");
   // Nigam & Jennings (1969), "Calculation of response spectra from
   // strong-motion earthquake records", BSSA 59(2): the exact solution over
   // a step of u'' + 2 zeta w u' + w^2 u = -a(t), a linear in the step.
@@ -69,29 +56,54 @@ void Sdof::respond(std::span<const double> a, std::vector<double>& u,
   }
 }
 
-double Sdof::peak_displacement(std::span<const double> a, int substeps) const
+long Sdof::advance(const double* x, long k0, long k_last, int substeps,
+                   long stop, double& u, double& v, double* peak,
+                   long* at) const
 {
-  double u = 0, v = 0, peak = 0;
-  const double m = substeps;
-  for (std::size_t k = 0; k + 1 < a.size(); ++k)
+  long index = k0 * substeps;
+  for (long k = k0; k < k_last && index < stop; ++k)
   {
-    const double slope = (a[k + 1] - a[k]) / m;
-    double a0 = a[k];
-    for (int j = 1; j <= substeps; ++j)
+    const double slope = (x[k + 1] - x[k]) / substeps;
+    double a0 = x[k];
+    for (int j = 1; j <= substeps && index < stop; ++j)
     {
-      const double a1 = j == substeps ? a[k + 1] : a[k] + slope * j;
+      const double a1 = j == substeps ? x[k + 1] : x[k] + slope * j;
       const double un = a11 * u + a12 * v + b11 * a0 + b12 * a1;
       v = a21 * u + a22 * v + b21 * a0 + b22 * a1;
       u = un;
       a0 = a1;
-      peak = std::max(peak, std::abs(u));
+      ++index;
+      if (peak && std::abs(u) > *peak)
+      {
+        *peak = std::abs(u);
+        *at = index;
+      }
     }
   }
+  return index;
+}
+
+double Sdof::peak_displacement(std::span<const double> a, int substeps) const
+{
+  double u = 0, v = 0, peak = 0;
+  long at = 0;
+  advance(a.data(), 0, static_cast<long>(a.size()) - 1, substeps, LONG_MAX, u,
+          v, &peak, &at);
   // After the record the input is zero: free vibration from the last
   // state (records end at rest; a nonzero last sample is taken to drop to
   // zero, as a step).
   const double period = 2.0 * std::numbers::pi / w_;
   return std::max(peak, free_vibration_peak(u, v, period, zeta_));
+}
+
+int substeps_for(double period, double dt, int samples_per_period)
+{
+  const double wanted = std::ceil(samples_per_period * dt / period);
+  require_argument(wanted <= 1e4, "period " + number_text(period) +
+                                      " s is too short for the record's step " +
+                                      number_text(dt) +
+                                      " s; expected at least dt / 150");
+  return std::max(1, static_cast<int>(wanted));
 }
 
 double free_vibration_peak(double u0, double v0, double period, double damping)
@@ -116,19 +128,20 @@ Spectrum response_spectrum(std::span<const double> a, double dt,
                            std::span<const double> periods, double damping,
                            int samples_per_period)
 {
-  require(samples_per_period >= 1, "samples per period must be >= 1");
-  require(dt > 0 && std::isfinite(dt),
-          "time step " + text(dt) + " s must be > 0");
-  require(damping >= 0 && damping < 1,
-          "damping ratio " + text(damping) + " must be in [0, 1)");
+  require_argument(samples_per_period >= 1, "samples per period must be >= 1");
+  require_argument(dt > 0 && std::isfinite(dt),
+                   "time step " + number_text(dt) + " s must be > 0");
+  require_argument(damping >= 0 && damping < 1, "damping ratio " +
+                                                    number_text(damping) +
+                                                    " must be in [0, 1)");
   Spectrum s;
   double pga = 0;
   for (double x : a)
     pga = std::max(pga, std::abs(x));
   for (double period : periods)
   {
-    require(period >= 0 && std::isfinite(period),
-            "period " + text(period) + " s must be >= 0");
+    require_argument(period >= 0 && std::isfinite(period),
+                     "period " + number_text(period) + " s must be >= 0");
     s.period.push_back(period);
     if (period == 0)
     {
@@ -138,11 +151,7 @@ Spectrum response_spectrum(std::span<const double> a, double dt,
       continue;
     }
     const double w = 2.0 * std::numbers::pi / period;
-    const double wanted = std::ceil(samples_per_period * dt / period);
-    require(wanted <= 1e4, "period " + text(period) +
-                               " s is too short for the record's step " +
-                               text(dt) + " s; expected at least dt / 150");
-    const int substeps = std::max(1, static_cast<int>(wanted));
+    const int substeps = substeps_for(period, dt, samples_per_period);
     const double d =
         Sdof(period, damping, dt / substeps).peak_displacement(a, substeps);
     s.sd.push_back(d);
@@ -154,8 +163,8 @@ Spectrum response_spectrum(std::span<const double> a, double dt,
 
 std::vector<double> log_spaced(double t_min, double t_max, int n)
 {
-  require(t_min > 0 && t_max > t_min && std::isfinite(t_max) && n >= 2,
-          "log_spaced: need 0 < t_min < t_max and n >= 2");
+  require_argument(t_min > 0 && t_max > t_min && std::isfinite(t_max) && n >= 2,
+                   "log_spaced: need 0 < t_min < t_max and n >= 2");
   std::vector<double> t(static_cast<std::size_t>(n));
   const double r = std::log(t_max / t_min) / (n - 1);
   for (int i = 0; i < n; ++i)
@@ -179,8 +188,8 @@ void integrate(std::span<const double> a, double dt, std::vector<double>& v,
 
 Measures measures(std::span<const double> a, double dt)
 {
-  require(dt > 0 && std::isfinite(dt),
-          "time step " + text(dt) + " s must be > 0");
+  require_argument(dt > 0 && std::isfinite(dt),
+                   "time step " + number_text(dt) + " s must be > 0");
   Measures m;
   std::vector<double> v, d;
   integrate(a, dt, v, d);

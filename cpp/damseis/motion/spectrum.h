@@ -25,6 +25,14 @@ public:
   /// same linear input (this object's dt is then the record's dt /
   /// substeps), so that the peak between the record's samples is seen.
   double peak_displacement(std::span<const double> a, int substeps = 1) const;
+  /// Steps (u, v) over the input samples x[k0] ... x[k_last], each step cut
+  /// into `substeps` (this object's dt is the record's dt / substeps), until
+  /// the substep index `stop` (counted from sample 0: k * substeps + j) or
+  /// the last sample; returns the substep index reached. With `peak`, tracks
+  /// the largest |u| and (in `at`) its substep index.
+  long advance(const double* x, long k0, long k_last, int substeps, long stop,
+               double& u, double& v, double* peak = nullptr,
+               long* at = nullptr) const;
 
   /// The recurrence: u+ = a11 u + a12 v + b11 a_k + b12 a_k+1 and
   /// v+ = a21 u + a22 v + b21 a_k + b22 a_k+1.
@@ -33,6 +41,10 @@ public:
 private:
   double w_, zeta_;
 };
+
+/// Sub-steps per record step that sample a period at least
+/// `samples_per_period` times (at least 1).
+int substeps_for(double period, double dt, int samples_per_period = 64);
 
 /// Largest |u(t)| for t >= 0 of the free vibration from (u0, v0): |u0| or
 /// the first extremum (where v = 0), whichever is larger (the later ones
