@@ -152,6 +152,68 @@ TEST(Spectrum, ElCentroMatchesChopra)
     EXPECT_NEAR(sp.sd[i], chopra[i], 0.01 * chopra[i]) << "T = " << periods[i];
 }
 
+// SdofBank steps several oscillators side by side with the arithmetic of
+// Sdof: on El Centro, each oscillator of a bank gives the peak of Sdof
+// stepped alone (sampled peak, its time and sign against Sdof::respond),
+// and run_to stops each selected oscillator at its own substep with the
+// state Sdof::respond has there. Same operations in the same order:
+// asserted 1e-12 relative.
+TEST(Spectrum, BankEqualsOscillatorsSteppedAlone)
+{
+  const Record r = read_record(records / "elcentro_1940_ns.at2", Units::g);
+  const std::vector<double> periods = {0.05, 0.3, 0.31, 1.0, 2.5};
+  const double zeta = 0.05;
+  for (int substeps : {1, 3})
+  {
+    const SdofBank bank(periods, zeta, r.dt, substeps);
+    const SdofBank::Peaks p = bank.peaks(r.acceleration);
+    // The record refined by linear interpolation: substeps of the bank.
+    std::vector<double> fine;
+    for (std::size_t k = 0; k + 1 < r.acceleration.size(); ++k)
+      for (int j = 0; j < substeps; ++j)
+        fine.push_back(r.acceleration[k] +
+                       (r.acceleration[k + 1] - r.acceleration[k]) * j /
+                           substeps);
+    fine.push_back(r.acceleration.back());
+    std::vector<std::size_t> which;
+    std::vector<long> stop;
+    for (std::size_t i = 0; i < periods.size(); ++i)
+    {
+      std::vector<double> u, v;
+      Sdof(periods[i], zeta, r.dt / substeps).respond(fine, u, v);
+      std::size_t at = 0;
+      for (std::size_t k = 0; k < u.size(); ++k)
+        if (std::abs(u[k]) > std::abs(u[at]))
+          at = k;
+      const double tol = 1e-12 * std::abs(u[at]);
+      EXPECT_NEAR(p.peak[i], std::abs(u[at]), tol) << "T " << periods[i];
+      EXPECT_NEAR(p.u_at_peak[i], u[at], tol) << "T " << periods[i];
+      EXPECT_EQ(p.at[i], static_cast<long>(at)) << "T " << periods[i];
+      EXPECT_NEAR(p.u_end[i], u.back(), tol);
+      // run_to: every other oscillator, stopped at staggered substeps.
+      if (i % 2 == 0)
+      {
+        which.push_back(i);
+        stop.push_back(static_cast<long>(substeps * (300 + 200 * i) + 1));
+      }
+    }
+    const long k0 = 0, k_last = static_cast<long>(r.acceleration.size()) - 1;
+    std::vector<double> u(which.size()), v(which.size());
+    std::vector<long> reached(which.size());
+    bank.run_to(r.acceleration.data(), k0, k_last, which, stop, u, v, reached);
+    for (std::size_t q = 0; q < which.size(); ++q)
+    {
+      std::vector<double> ur, vr;
+      Sdof(periods[which[q]], zeta, r.dt / substeps).respond(fine, ur, vr);
+      const auto s = static_cast<std::size_t>(stop[q]);
+      EXPECT_EQ(reached[q], stop[q]);
+      EXPECT_NEAR(u[q], ur[s], 1e-12 * p.peak[which[q]]);
+      EXPECT_NEAR(v[q], vr[s],
+                  1e-12 * p.peak[which[q]] * 2 * pi / periods[which[q]]);
+    }
+  }
+}
+
 // Free vibration after the record: a record that stops while the
 // oscillator moves. Against the same record followed by 20 s of zeros (the
 // free vibration sampled finely): within the sampling of the peak.

@@ -43,7 +43,8 @@ struct ArtificialSettings
   Envelope envelope;
   std::uint64_t seed = 1;
   /// Control periods of the acceptance (and of the matching, extended by
-  /// half a decade on each side): default 100 log-spaced from 0.04 to 4 s.
+  /// half a decade below; nothing is matched beyond the longest): default
+  /// 100 log-spaced from 0.04 to 4 s.
   std::vector<double> control_periods = log_spaced(0.04, 4.0, 100);
   double damping = 0.05;
   /// Acceptance: |Sa / target - 1| <= tolerance at every control period.

@@ -33,7 +33,9 @@ void add_target_keys(input::Schema& s, const std::string& p)
       .above(0)
       .at_most(1.5);
   s.real(p + ".tg", "0.0", "s",
-         "Chinese codes: Tg instead of the site-class table (0: the table)")
+         "Chinese codes: Tg instead of the site-class table (0: the table; "
+         "DL 5073 §4.3.6 adds 0.05 s for a fundamental period over 1 s at "
+         "intensity 8 or less: give that here)")
       .at_least(0)
       .at_most(3.0);
   s.real(p + ".beta_max", "0.0", "-",

@@ -2,8 +2,8 @@
 #include "message.h"
 #include "record.h"
 #include <algorithm>
-#include <climits>
 #include <cmath>
+#include <map>
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
@@ -56,44 +56,169 @@ void Sdof::respond(std::span<const double> a, std::vector<double>& u,
   }
 }
 
-long Sdof::advance(const double* x, long k0, long k_last, int substeps,
-                   long stop, double& u, double& v, double* peak,
-                   long* at) const
-{
-  long index = k0 * substeps;
-  for (long k = k0; k < k_last && index < stop; ++k)
-  {
-    const double slope = (x[k + 1] - x[k]) / substeps;
-    double a0 = x[k];
-    for (int j = 1; j <= substeps && index < stop; ++j)
-    {
-      const double a1 = j == substeps ? x[k + 1] : x[k] + slope * j;
-      const double un = a11 * u + a12 * v + b11 * a0 + b12 * a1;
-      v = a21 * u + a22 * v + b21 * a0 + b22 * a1;
-      u = un;
-      a0 = a1;
-      ++index;
-      if (peak && std::abs(u) > *peak)
-      {
-        *peak = std::abs(u);
-        *at = index;
-      }
-    }
-  }
-  return index;
-}
-
 double Sdof::peak_displacement(std::span<const double> a, int substeps) const
 {
   double u = 0, v = 0, peak = 0;
-  long at = 0;
-  advance(a.data(), 0, static_cast<long>(a.size()) - 1, substeps, LONG_MAX, u,
-          v, &peak, &at);
+  for (std::size_t k = 0; k + 1 < a.size(); ++k)
+  {
+    const double slope = (a[k + 1] - a[k]) / substeps;
+    double a0 = a[k];
+    for (int j = 1; j <= substeps; ++j)
+    {
+      const double a1 = j == substeps ? a[k + 1] : a[k] + slope * j;
+      const double un = a11 * u + a12 * v + b11 * a0 + b12 * a1;
+      v = a21 * u + a22 * v + b21 * a0 + b22 * a1;
+      u = un;
+      peak = std::max(peak, std::abs(u));
+      a0 = a1;
+    }
+  }
   // After the record the input is zero: free vibration from the last
   // state (records end at rest; a nonzero last sample is taken to drop to
   // zero, as a step).
   const double period = 2.0 * std::numbers::pi / w_;
   return std::max(peak, free_vibration_peak(u, v, period, zeta_));
+}
+
+SdofBank::SdofBank(std::span<const double> periods, double damping, double dt,
+                   int substeps)
+    : substeps_(substeps)
+{
+  require_argument(substeps >= 1, "substeps must be >= 1");
+  for (double period : periods)
+  {
+    const Sdof s(period, damping, dt / substeps);
+    a11_.push_back(s.a11);
+    a12_.push_back(s.a12);
+    a21_.push_back(s.a21);
+    a22_.push_back(s.a22);
+    b11_.push_back(s.b11);
+    b12_.push_back(s.b12);
+    b21_.push_back(s.b21);
+    b22_.push_back(s.b22);
+  }
+}
+
+SdofBank::Peaks SdofBank::peaks(std::span<const double> a) const
+{
+  const std::size_t m = size();
+  Peaks p;
+  p.peak.assign(m, 0.0);
+  p.u_at_peak.assign(m, 0.0);
+  p.u_end.assign(m, 0.0);
+  p.v_end.assign(m, 0.0);
+  p.at.assign(m, 0);
+  double* u = p.u_end.data();
+  double* v = p.v_end.data();
+  long index = 0;
+  for (std::size_t k = 0; k + 1 < a.size(); ++k)
+  {
+    const double slope = (a[k + 1] - a[k]) / substeps_;
+    double a0 = a[k];
+    for (int j = 1; j <= substeps_; ++j)
+    {
+      const double a1 = j == substeps_ ? a[k + 1] : a[k] + slope * j;
+      ++index;
+      for (std::size_t i = 0; i < m; ++i)
+      {
+        const double un =
+            a11_[i] * u[i] + a12_[i] * v[i] + b11_[i] * a0 + b12_[i] * a1;
+        v[i] = a21_[i] * u[i] + a22_[i] * v[i] + b21_[i] * a0 + b22_[i] * a1;
+        u[i] = un;
+        if (std::abs(un) > p.peak[i])
+        {
+          p.peak[i] = std::abs(un);
+          p.u_at_peak[i] = un;
+          p.at[i] = index;
+        }
+      }
+      a0 = a1;
+    }
+  }
+  return p;
+}
+
+void SdofBank::run_to(const double* x, long k0, long k_last,
+                      std::span<const std::size_t> which,
+                      std::span<const long> stop, std::span<double> u,
+                      std::span<double> v, std::span<long> reached) const
+{
+  // The selected oscillators in order of their stops, with their
+  // coefficients side by side: those still running are the tail
+  // [first, n) of these arrays.
+  const std::size_t n = which.size();
+  std::vector<std::size_t> order(n);
+  for (std::size_t i = 0; i < n; ++i)
+    order[i] = i;
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t i, std::size_t j) { return stop[i] < stop[j]; });
+  std::vector<double> c(8 * n), us(n, 0.0), vs(n, 0.0);
+  std::vector<long> stops(n);
+  for (std::size_t r = 0; r < n; ++r)
+  {
+    const std::size_t o = which[order[r]];
+    const double values[8] = {a11_[o], a12_[o], a21_[o], a22_[o],
+                              b11_[o], b12_[o], b21_[o], b22_[o]};
+    for (int q = 0; q < 8; ++q)
+      c[static_cast<std::size_t>(q) * n + r] = values[q];
+    stops[r] = stop[order[r]];
+  }
+  const double *c11 = c.data(), *c12 = c11 + n, *c21 = c12 + n, *c22 = c21 + n,
+               *d11 = c22 + n, *d12 = d11 + n, *d21 = d12 + n, *d22 = d21 + n;
+  double* u_ = us.data();
+  double* v_ = vs.data();
+  long index = k0 * substeps_;
+  std::vector<long> reached_sorted(n, index);
+  std::size_t first = 0;
+  auto retire = [&]
+  {
+    while (first < n && stops[first] <= index)
+      reached_sorted[first++] = index;
+  };
+  retire();
+  for (long k = k0; k < k_last && first < n; ++k)
+  {
+    const double slope = (x[k + 1] - x[k]) / substeps_;
+    double a0 = x[k];
+    for (int j = 1; j <= substeps_ && first < n; ++j)
+    {
+      const double a1 = j == substeps_ ? x[k + 1] : x[k] + slope * j;
+      for (std::size_t i = first; i < n; ++i)
+      {
+        const double un =
+            c11[i] * u_[i] + c12[i] * v_[i] + d11[i] * a0 + d12[i] * a1;
+        v_[i] = c21[i] * u_[i] + c22[i] * v_[i] + d21[i] * a0 + d22[i] * a1;
+        u_[i] = un;
+      }
+      a0 = a1;
+      ++index;
+      retire();
+    }
+  }
+  for (std::size_t r = first; r < n; ++r)
+    reached_sorted[r] = index;
+  for (std::size_t r = 0; r < n; ++r)
+  {
+    u[order[r]] = us[r];
+    v[order[r]] = vs[r];
+    reached[order[r]] = reached_sorted[r];
+  }
+}
+
+SdofBanks::SdofBanks(std::span<const double> periods, double damping, double dt,
+                     int samples_per_period)
+{
+  std::map<int, std::vector<std::size_t>> groups;
+  for (std::size_t i = 0; i < periods.size(); ++i)
+    groups[substeps_for(periods[i], dt, samples_per_period)].push_back(i);
+  for (const auto& [substeps, group] : groups)
+  {
+    std::vector<double> t;
+    for (std::size_t i : group)
+      t.push_back(periods[i]);
+    banks.emplace_back(t, damping, dt, substeps);
+    members.push_back(group);
+  }
 }
 
 int substeps_for(double period, double dt, int samples_per_period)
@@ -138,25 +263,41 @@ Spectrum response_spectrum(std::span<const double> a, double dt,
   double pga = 0;
   for (double x : a)
     pga = std::max(pga, std::abs(x));
-  for (double period : periods)
+  const std::size_t n = periods.size();
+  s.period.assign(periods.begin(), periods.end());
+  s.sd.assign(n, 0.0);
+  std::vector<double> positive;
+  std::vector<std::size_t> index;
+  for (std::size_t i = 0; i < n; ++i)
   {
-    require_argument(period >= 0 && std::isfinite(period),
-                     "period " + number_text(period) + " s must be >= 0");
-    s.period.push_back(period);
-    if (period == 0)
+    require_argument(periods[i] >= 0 && std::isfinite(periods[i]),
+                     "period " + number_text(periods[i]) + " s must be >= 0");
+    if (periods[i] > 0)
     {
-      s.sd.push_back(0);
-      s.psv.push_back(0);
-      s.psa.push_back(pga);
-      continue;
+      positive.push_back(periods[i]);
+      index.push_back(i);
     }
-    const double w = 2.0 * std::numbers::pi / period;
-    const int substeps = substeps_for(period, dt, samples_per_period);
-    const double d =
-        Sdof(period, damping, dt / substeps).peak_displacement(a, substeps);
-    s.sd.push_back(d);
-    s.psv.push_back(w * d);
-    s.psa.push_back(w * w * d);
+  }
+  const SdofBanks banks(positive, damping, dt, samples_per_period);
+  for (std::size_t b = 0; b < banks.banks.size(); ++b)
+  {
+    const SdofBank::Peaks p = banks.banks[b].peaks(a);
+    // After the record the input is zero: free vibration from the last
+    // state (records end at rest; a nonzero last sample is taken to drop
+    // to zero, as a step).
+    for (std::size_t r = 0; r < banks.members[b].size(); ++r)
+    {
+      const std::size_t i = banks.members[b][r];
+      s.sd[index[i]] =
+          std::max(p.peak[r], free_vibration_peak(p.u_end[r], p.v_end[r],
+                                                  positive[i], damping));
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const double w = periods[i] > 0 ? 2.0 * std::numbers::pi / periods[i] : 0;
+    s.psv.push_back(w * s.sd[i]);
+    s.psa.push_back(periods[i] > 0 ? w * w * s.sd[i] : pga);
   }
   return s;
 }
