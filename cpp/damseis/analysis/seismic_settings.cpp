@@ -98,8 +98,9 @@ void add_seismic_keys(input::Schema& s,
             "write a checkpoint and stop at this step (0: run to the end)")
       .at_least(0);
   s.string("solver.factorization", "auto", "-",
-           "sparse factorisation (auto: petsc for serial 2D, else mumps)",
-           {"auto", "petsc", "mumps", "cholmod"});
+           "sparse factorisation (auto: 2D petsc serially, redundant in "
+           "parallel up to 1e5 unknowns; else mumps)",
+           {"auto", "petsc", "mumps", "cholmod", "redundant"});
 }
 
 namespace

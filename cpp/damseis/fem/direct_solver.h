@@ -11,13 +11,19 @@ namespace damseis::fem
 /// The factorisations PETSc offers here (bench/ compares them).
 enum class Factorization
 {
-  automatic, ///< PETSc's own factorisation serial, else MUMPS
-  petsc,     ///< PETSc's own LU/Cholesky, nested-dissection ordering (serial)
-  mumps,     ///< MUMPS Cholesky (serial or parallel)
-  cholmod,   ///< SuiteSparse CHOLMOD (serial)
+  /// PETSc's own factorisation serial; in parallel the redundant one up to
+  /// 10^5 unknowns, MUMPS beyond
+  automatic,
+  petsc,   ///< PETSc's own LU/Cholesky, nested-dissection ordering (serial)
+  mumps,   ///< MUMPS Cholesky (serial or parallel)
+  cholmod, ///< SuiteSparse CHOLMOD (serial)
+           /// Every rank factorises the whole matrix (PETSc LU, nested
+           /// dissection): small problems in parallel (serial: the same as
+           /// petsc)
+  redundant,
 };
 
-/// Parses "auto", "petsc", "mumps" or "cholmod"; throws
+/// Parses "auto", "petsc", "mumps", "cholmod" or "redundant"; throws
 /// std::invalid_argument otherwise.
 Factorization parse_factorization(const std::string& name);
 
@@ -53,13 +59,18 @@ public:
 private:
   /// (Re)creates the KSP with the settings of the constructor.
   void create_ksp(MPI_Comm comm);
+  /// Resolves `automatic` in parallel by the size of A.
+  void choose_for(Mat A);
+  /// Makes the KSP's preconditioner the redundant PETSc LU.
+  void set_up_redundant(MPI_Comm comm);
   /// Factorises A in the KSP; the factors stay until the next call.
   void set_up(Mat A);
   KSP _ksp = nullptr;
   Mat _converted = nullptr; ///< A in the storage the package needs
   Factorization _kind;
-  bool _lu = false;     ///< the last factorisation was factorize_lu
-  bool _failed = false; ///< the last factorize_lu failed
+  bool _automatic = false; ///< _kind was chosen, not given
+  bool _lu = false;        ///< the last factorisation was factorize_lu
+  bool _failed = false;    ///< the last factorize_lu failed
   double _factor_seconds = 0.0;
 };
 } // namespace damseis::fem
