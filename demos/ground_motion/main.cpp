@@ -9,7 +9,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <damseis/case/command_line.h>
+#include <damseis/input/command_line.h>
 #include <damseis/motion/ground_motion_output.h>
 #include <damseis/results/core_demo.h>
 #include <filesystem>

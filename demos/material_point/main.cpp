@@ -6,7 +6,7 @@
 // With no arguments it runs demos/material_point/material_point.toml.
 #include <cstdio>
 #include <cstdlib>
-#include <damseis/case/command_line.h>
+#include <damseis/input/command_line.h>
 #include <damseis/material/material_point_case.h>
 #include <damseis/results/core_demo.h>
 #include <filesystem>

@@ -2,8 +2,8 @@
 // and every kind of damage is recognised as such, never decoded as valid.
 #include <cmath>
 #include <cstring>
-#include <damseis/case/case.h>
 #include <damseis/checkpoint/checkpoint_file.h>
+#include <damseis/input/case.h>
 #include <gtest/gtest.h>
 #include <limits>
 

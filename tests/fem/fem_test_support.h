@@ -4,10 +4,10 @@
 // reductions. Everything here is collective on the mesh communicator.
 #pragma once
 
-#include <damseis/fem/direct_solver.h>
 #include <damseis/fem/elastic_model.h>
 #include <damseis/geometry/gmsh_mesh.h>
 #include <damseis/geometry/tags.h>
+#include <damseis/linalg/direct_solver.h>
 
 #include <algorithm>
 #include <array>
@@ -303,7 +303,7 @@ private:
 inline void solve(Mat K, Vec b, dolfinx::fem::Function<double>& u)
 {
   PetscErrorRecorder errors;
-  damseis::fem::DirectSolver solver(u.function_space()->mesh()->comm());
+  damseis::linalg::DirectSolver solver(u.function_space()->mesh()->comm());
   solver.factorize(K);
   Vec x = dolfinx::la::petsc::create_vector_wrap(*u.x());
   solver.solve(b, x);

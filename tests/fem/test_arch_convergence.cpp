@@ -75,14 +75,14 @@
 // Required: u(P1) < 0.85 u(P2) and f1(P1) > 1.15 f1(P2).
 #include "fem_test_support.h"
 
-#include <damseis/case/case.h>
-#include <damseis/fem/direct_solver.h>
 #include <damseis/fem/elastic_model.h>
-#include <damseis/fem/modal.h>
 #include <damseis/geometry/arch_case.h>
 #include <damseis/geometry/arch_dam.h>
 #include <damseis/geometry/arch_mesh.h>
 #include <damseis/geometry/tags.h>
+#include <damseis/input/case.h>
+#include <damseis/linalg/direct_solver.h>
+#include <damseis/linalg/modal.h>
 
 #include <array>
 #include <chrono>
@@ -200,13 +200,13 @@ Result run(double h, int degree)
   PMat K = own(fe.assemble_stiffness());
   {
     PMat M = own(fe.assemble_mass(nullptr));
-    r.f_dry =
-        damseis::fem::solve_modes(K.mat(), M.mat(), num_modes).frequencies_hz;
+    r.f_dry = damseis::linalg::solve_modes(K.mat(), M.mat(), num_modes)
+                  .frequencies_hz;
   }
   {
     PMat M = own(fe.assemble_mass(&water));
-    r.f_wet =
-        damseis::fem::solve_modes(K.mat(), M.mat(), num_modes).frequencies_hz;
+    r.f_wet = damseis::linalg::solve_modes(K.mat(), M.mat(), num_modes)
+                  .frequencies_hz;
   }
   PVec f = own(fe.assemble_hydrostatic(water));
   dolfinx::fem::Function<double> u(fe.V());

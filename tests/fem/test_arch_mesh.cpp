@@ -23,12 +23,12 @@
 //    perpendicular to the joint plane (algorithms.md 2.1), side-1 and
 //    side-2 facet areas are equal, the pair count equals the number of
 //    distinct side-2 vertices off the interface in the distributed mesh.
-#include <damseis/case/case.h>
 #include <damseis/geometry/arch_case.h>
 #include <damseis/geometry/arch_dam.h>
 #include <damseis/geometry/arch_mesh.h>
 #include <damseis/geometry/joints.h>
 #include <damseis/geometry/tags.h>
+#include <damseis/input/case.h>
 
 #include <algorithm>
 #include <array>

@@ -8,8 +8,8 @@
 // the residual of a direct solve (1e-12 relative).
 #include "fem_test_support.h"
 
-#include <damseis/fem/blas_single_column.h>
-#include <damseis/fem/direct_solver.h>
+#include <damseis/linalg/blas_single_column.h>
+#include <damseis/linalg/direct_solver.h>
 #include <random>
 #include <vector>
 
@@ -66,10 +66,10 @@ TEST(BlasSingleColumn, GemmWithOneColumnEqualsTheProduct)
           }
           ref[i] = alpha * s + (beta == 0.0 ? 0.0 : beta * c[i]);
         }
-        const long before = damseis::fem::blas_single_column_calls();
+        const long before = damseis::linalg::blas_single_column_calls();
         dgemm_(&ta, &tb, &m, &n, &k, &alpha, a.data(), &lda, b.data(), &ldb,
                &beta, c.data(), &ldc, 1, 1);
-        EXPECT_EQ(damseis::fem::blas_single_column_calls(), before + 1);
+        EXPECT_EQ(damseis::linalg::blas_single_column_calls(), before + 1);
         for (int i = 0; i < m; ++i)
           EXPECT_NEAR(c[i], ref[i], 1e-13 * std::max(1.0, std::abs(ref[i])))
               << ta << tb << " beta " << beta << " row " << i;
@@ -89,10 +89,10 @@ TEST(BlasSingleColumn, GemmCornerCasesStillScaleByBeta)
   {
     auto c = random_vector(std::size_t(ldc) * n, 6);
     const auto c0 = c;
-    const long before = damseis::fem::blas_single_column_calls();
+    const long before = damseis::linalg::blas_single_column_calls();
     dgemm_("N", "N", &m, &n, &k, &alpha, a.data(), &lda, b.data(), &ldb, &beta,
            c.data(), &ldc, 1, 1);
-    EXPECT_EQ(damseis::fem::blas_single_column_calls(), before);
+    EXPECT_EQ(damseis::linalg::blas_single_column_calls(), before);
     for (int j = 0; j < n; ++j)
     {
       for (int i = 0; i < m; ++i)
@@ -122,10 +122,10 @@ TEST(BlasSingleColumn, TrsmWithOneColumnEqualsSubstitution)
         {
           const auto b0 = random_vector(m, 8);
           auto x = b0;
-          const long before = damseis::fem::blas_single_column_calls();
+          const long before = damseis::linalg::blas_single_column_calls();
           dtrsm_("L", &uplo, &trans, &diag, &m, &n, &alpha, a.data(), &lda,
                  x.data(), &ldb, 1, 1, 1, 1);
-          EXPECT_EQ(damseis::fem::blas_single_column_calls(),
+          EXPECT_EQ(damseis::linalg::blas_single_column_calls(),
                     before + (alpha == 1.0 ? 1 : 0));
           // op(T) x = alpha b0, T the triangle of a (unit diagonal if 'U').
           for (int i = 0; i < m; ++i)
@@ -181,12 +181,12 @@ TEST(BlasSingleColumn, MumpsSolveReachesTheForwarding)
   VecDuplicate(b, &r);
   VecSetRandom(b, nullptr);
   {
-    damseis::fem::DirectSolver solver(MPI_COMM_WORLD,
-                                      damseis::fem::Factorization::mumps);
+    damseis::linalg::DirectSolver solver(MPI_COMM_WORLD,
+                                         damseis::linalg::Factorization::mumps);
     solver.factorize(A);
-    const long before = damseis::fem::blas_single_column_calls();
+    const long before = damseis::linalg::blas_single_column_calls();
     solver.solve(b, x);
-    EXPECT_GT(damseis::fem::blas_single_column_calls(), before);
+    EXPECT_GT(damseis::linalg::blas_single_column_calls(), before);
     MatMult(A, x, r);
     VecAXPY(r, -1.0, b);
     PetscReal rn, bn;

@@ -68,7 +68,7 @@ PVec loading(ElasticModel& fe, double scale)
   PMat K = own(fe.assemble_stiffness());
   PVec F = own(fe.assemble_gravity({scale, -9.81, 0}));
   PVec u = own(fe.assemble_gravity({0, 0, 0}));
-  damseis::fem::DirectSolver solver(MPI_COMM_WORLD);
+  damseis::linalg::DirectSolver solver(MPI_COMM_WORLD);
   solver.factorize(K.mat());
   solver.solve(F.vec(), u.vec());
   return u;

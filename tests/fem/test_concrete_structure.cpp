@@ -98,7 +98,7 @@ TEST(ConcreteStructure, NewtonConvergesQuadratically)
   };
   const auto rep =
       dynamics::solve_static(system, K.mat(), zero.vec(), F.vec(), 1, u.vec(),
-                             ns, damseis::fem::Factorization::automatic);
+                             ns, damseis::linalg::Factorization::automatic);
   ASSERT_EQ(rep.cuts, 0);
   ASSERT_GE(e.size(), 4u);
   std::string seq;
@@ -254,8 +254,8 @@ double bar_energy_ratio(int nx, int degree)
         break;
       }
       cm.assemble_tangent(J.mat());
-      damseis::fem::DirectSolver lu(MPI_COMM_WORLD,
-                                    damseis::fem::Factorization::mumps);
+      damseis::linalg::DirectSolver lu(MPI_COMM_WORLD,
+                                       damseis::linalg::Factorization::mumps);
       lu.factorize_lu(J.mat());
       lu.solve(R.vec(), du.vec());
       VecAXPY(u.vec(), -1.0, du.vec());

@@ -1,4 +1,4 @@
-// fem::duplicate_matrix: a copy of a BAIJ matrix keeps the original's
+// linalg::duplicate_matrix: a copy of a BAIJ matrix keeps the original's
 // block-size-specialised products (PETSc 3.18's MatDuplicate installs the
 // generic one, 3-3.5x slower; see duplicate_matrix.h). Checked:
 //  - the copy's MatMult (and, in parallel, that of its diagonal and
@@ -9,12 +9,12 @@
 // on 2 ranks.
 #include "fem_test_support.h"
 
-#include <damseis/fem/duplicate_matrix.h>
+#include <damseis/linalg/duplicate_matrix.h>
 
 namespace
 {
 using namespace damseis::test;
-using damseis::fem::duplicate_matrix;
+using damseis::linalg::duplicate_matrix;
 
 /// A block tridiagonal-like BAIJ matrix with 5 block neighbours per block
 /// row and distinct values.

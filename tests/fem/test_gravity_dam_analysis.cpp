@@ -15,7 +15,7 @@
 
 #include <damseis/analysis/gravity_dam_analysis.h>
 #include <damseis/analysis/gravity_dam_case.h>
-#include <damseis/case/case.h>
+#include <damseis/input/case.h>
 
 #include <filesystem>
 #include <fstream>

@@ -1,5 +1,5 @@
 // Natural frequencies of a uniform shear column (ElasticModel stiffness
-// and mass, fem::solve_modes). Run serial and on 2 MPI ranks.
+// and mass, linalg::solve_modes). Run serial and on 2 MPI ranks.
 //
 // Setup: rectangle of width W = H/10 = 10 m and height H = 100 m, E = 30
 // GPa, nu = 0.2, rho = 2500 kg/m3; all displacements fixed at the base
@@ -35,8 +35,8 @@
 #include "fem_test_support.h"
 
 #include <damseis/fem/elastic_model.h>
-#include <damseis/fem/modal.h>
 #include <damseis/geometry/tags.h>
+#include <damseis/linalg/modal.h>
 
 #include <array>
 #include <cmath>
@@ -116,7 +116,8 @@ Column column(int degree, std::size_t ny)
   const int bs = em.V()->dofmap()->index_map_bs();
 
   PetscErrorRecorder errors;
-  damseis::fem::Modes modes = damseis::fem::solve_modes(K.mat(), M.mat(), 3);
+  damseis::linalg::Modes modes =
+      damseis::linalg::solve_modes(K.mat(), M.mat(), 3);
   errors.expect_none("solve_modes");
   Column c;
   c.f = modes.frequencies_hz;
@@ -236,7 +237,7 @@ TEST(ShearColumn, TwoMassMatricesAndStaticSolveShareOneFactorisation)
   MatScale(m4, 4.0);
   PMat M4 = own(m4);
   const std::vector<double> alone =
-      damseis::fem::solve_modes(cm.K.mat(), cm.M.mat(), 3).frequencies_hz;
+      damseis::linalg::solve_modes(cm.K.mat(), cm.M.mat(), 3).frequencies_hz;
 
   PetscLogDefaultBegin();
   PetscLogEvent chol = 0, lu = 0;
@@ -258,9 +259,9 @@ TEST(ShearColumn, TwoMassMatricesAndStaticSolveShareOneFactorisation)
   VecSet(one, 1.0);
   MatMult(cm.K.mat(), one, b);
   PetscErrorRecorder errors;
-  const std::vector<damseis::fem::Modes> both =
-      damseis::fem::solve_modes(cm.K.mat(), {cm.M.mat(), M4.mat()}, 3,
-                                [&](KSP ksp) { KSPSolve(ksp, b, x); });
+  const std::vector<damseis::linalg::Modes> both =
+      damseis::linalg::solve_modes(cm.K.mat(), {cm.M.mat(), M4.mat()}, 3,
+                                   [&](KSP ksp) { KSPSolve(ksp, b, x); });
   errors.expect_none("solve_modes");
   VecAXPY(x, -1.0, one);
   double err = 0.0;

@@ -15,15 +15,15 @@
 #include "fem_test_support.h"
 
 #include <damseis/dynamics/tangent_solver.h>
-#include <damseis/fem/direct_solver.h>
+#include <damseis/linalg/direct_solver.h>
 
 namespace
 {
 using namespace damseis::test;
 using damseis::dynamics::Direction;
 using damseis::dynamics::TangentSolver;
-using damseis::fem::DirectSolver;
-using damseis::fem::Factorization;
+using damseis::linalg::DirectSolver;
+using damseis::linalg::Factorization;
 
 /// A0: the 1D stiffness + mass tridiagonal matrix (SPD) of n unknowns;
 /// with `rank` > 0, a symmetric indefinite perturbation of that rank: the

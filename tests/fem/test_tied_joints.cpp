@@ -55,13 +55,13 @@
 // not happen; the "all_split" variant has no such vertex either.
 #include "fem_test_support.h"
 
-#include <damseis/fem/direct_solver.h>
 #include <damseis/fem/elastic_model.h>
-#include <damseis/fem/modal.h>
 #include <damseis/fem/tied_dofs.h>
 #include <damseis/geometry/joints.h>
 #include <damseis/geometry/model_arrays.h>
 #include <damseis/geometry/tags.h>
+#include <damseis/linalg/direct_solver.h>
+#include <damseis/linalg/modal.h>
 
 #include <algorithm>
 #include <array>
@@ -309,7 +309,7 @@ PVec direct_solve(Mat A, Vec b)
   MatCreateVecs(A, &x, nullptr);
   MPI_Comm comm;
   PetscObjectGetComm(reinterpret_cast<PetscObject>(A), &comm);
-  damseis::fem::DirectSolver solver(comm);
+  damseis::linalg::DirectSolver solver(comm);
   solver.factorize(A);
   solver.solve(b, x);
   errors.expect_none("DirectSolver (" + solver.name() + ")");
@@ -545,10 +545,11 @@ TEST_P(TiedJoints, EqualJointlessMesh)
   std::vector<double> fa[2], fb[2];
   for (int w = 0; w < 2; ++w)
   {
-    fa[w] = damseis::fem::solve_modes(sa.K.mat(), (w ? sa.Mw : sa.M).mat(), 4)
-                .frequencies_hz;
+    fa[w] =
+        damseis::linalg::solve_modes(sa.K.mat(), (w ? sa.Mw : sa.M).mat(), 4)
+            .frequencies_hz;
     PMat Mr = ptap((w ? sb.Mw : sb.M).mat(), P.mat());
-    fb[w] = damseis::fem::solve_modes(Kr.mat(), Mr.mat(), 4).frequencies_hz;
+    fb[w] = damseis::linalg::solve_modes(Kr.mat(), Mr.mat(), 4).frequencies_hz;
     ASSERT_EQ(fa[w].size(), 4u);
     ASSERT_EQ(fb[w].size(), 4u);
     EXPECT_LT(max_relative(fa[w], fb[w]), 1e-8)
@@ -560,7 +561,7 @@ TEST_P(TiedJoints, EqualJointlessMesh)
   const Difference d0 = compare(rows_a, gather_dofs(*sb.fe, u0.vec()));
   EXPECT_GT(d0.relative(), 0.05) << name << ": the joint must matter";
   const auto f0 =
-      damseis::fem::solve_modes(sb.K.mat(), sb.Mw.mat(), 4).frequencies_hz;
+      damseis::linalg::solve_modes(sb.K.mat(), sb.Mw.mat(), 4).frequencies_hz;
   EXPECT_GT(max_relative(fa[1], f0), 0.01) << name;
 
   print_metric(fmt(name, ": ", ncells, " cells, ", pairs[0].size(), " pairs, ",

@@ -4,9 +4,9 @@
 #pragma once
 
 #include "seismic_settings.h"
-#include <damseis/case/case.h>
 #include <damseis/fem/elastic_model.h>
 #include <damseis/geometry/arch_dam.h>
+#include <damseis/input/case.h>
 
 namespace damseis::analysis
 {

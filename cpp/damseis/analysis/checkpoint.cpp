@@ -1,5 +1,5 @@
 #include "checkpoint.h"
-#include <damseis/case/case.h>
+#include <damseis/input/case.h>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>

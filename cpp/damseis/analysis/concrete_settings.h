@@ -2,8 +2,8 @@
 // settings) shared by the 2D dam demos, and their reading.
 #pragma once
 
-#include <damseis/case/case.h>
 #include <damseis/dynamics/nonlinear_newmark.h>
+#include <damseis/input/case.h>
 #include <damseis/material/concrete.h>
 #include <string>
 

@@ -6,8 +6,8 @@
 
 #include <cstdio>
 #include <damseis/analysis/linear_seismic.h>
-#include <damseis/case/command_line.h>
 #include <damseis/dynamics/nonlinear_newmark.h>
+#include <damseis/input/command_line.h>
 #include <damseis/results/output_folder.h>
 #include <damseis/results/progress.h>
 #include <filesystem>

@@ -4,10 +4,10 @@
 
 #include "concrete_settings.h"
 #include "seismic_settings.h"
-#include <damseis/case/case.h>
 #include <damseis/fem/elastic_model.h>
 #include <damseis/fem/gravity_dam_loads.h>
 #include <damseis/geometry/gravity_dam.h>
+#include <damseis/input/case.h>
 
 namespace damseis::analysis
 {

@@ -4,9 +4,9 @@
 #include <chrono>
 #include <cmath>
 #include <csignal>
-#include <damseis/fem/modal.h>
 #include <damseis/fem/tied_dofs.h>
 #include <damseis/geometry/tags.h>
+#include <damseis/linalg/modal.h>
 #include <damseis/results/displacement_envelope.h>
 #include <damseis/results/face_points.h>
 #include <damseis/results/field_writer.h>
@@ -122,7 +122,7 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
       K.mat(), M.mat(), added ? M0.mat() : nullptr, s,
       [&](KSP ksp) { KSPSolve(ksp, F.vec(), u_static.vec()); });
   const double static_seconds = setup_seconds + modal.with_K_factors_seconds;
-  const fem::Modes& modes = modal.modes;
+  const linalg::Modes& modes = modal.modes;
 
   // Dynamic stage: displacement relative to the base under the ground
   // acceleration, M a + C v + K u = -M sum_c r_c a_gc(t). The added mass

@@ -248,14 +248,14 @@ ModalResult modal_and_damping(Mat K, Mat M, Mat M_dry, const SeismicSettings& s,
     callback = timed;
   if (M_dry)
   {
-    std::vector<fem::Modes> both =
-        fem::solve_modes(K, {M, M_dry}, s.modes, callback);
+    std::vector<linalg::Modes> both =
+        linalg::solve_modes(K, {M, M_dry}, s.modes, callback);
     r.modes = std::move(both[0]);
     r.dry_hz = both[1].frequencies_hz;
   }
   else
   {
-    r.modes = std::move(fem::solve_modes(K, {M}, s.modes, callback)[0]);
+    r.modes = std::move(linalg::solve_modes(K, {M}, s.modes, callback)[0]);
     r.dry_hz = r.modes.frequencies_hz;
   }
   r.seconds = seconds_since(t0) - r.with_K_factors_seconds;
@@ -279,7 +279,7 @@ ModalResult modal_and_damping(Mat K, Mat M, Mat M_dry, const SeismicSettings& s,
   return r;
 }
 
-void write_modes(fem::ElasticModel& fe, const fem::Modes& modes,
+void write_modes(fem::ElasticModel& fe, const linalg::Modes& modes,
                  const std::function<Vec(Vec)>& full,
                  const std::filesystem::path& file)
 {

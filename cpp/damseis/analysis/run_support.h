@@ -7,7 +7,7 @@
 #include "seismic_settings.h"
 #include <chrono>
 #include <damseis/fem/elastic_model.h>
-#include <damseis/fem/modal.h>
+#include <damseis/linalg/modal.h>
 #include <damseis/results/stress_envelope.h>
 #include <dolfinx/la/petsc.h>
 #include <filesystem>
@@ -96,11 +96,11 @@ private:
 
 /// Modal analysis (with the added mass in M, and dry if `M_dry`) and the
 /// Rayleigh damping of the settings; prints the frequencies (rank 0).
-/// `with_K_factors`: see fem::solve_modes (its time is reported in
+/// `with_K_factors`: see linalg::solve_modes (its time is reported in
 /// `with_K_factors_seconds`, not in `seconds`).
 struct ModalResult
 {
-  fem::Modes modes;
+  linalg::Modes modes;
   std::vector<double> dry_hz;
   double f1 = 0.0, f2 = 0.0;
   dynamics::RayleighDamping damping;
@@ -113,7 +113,7 @@ modal_and_damping(Mat K, Mat M, Mat M_dry, const SeismicSettings& s,
 /// Writes the mode shapes (P1 vertex displacement, mass-normalised) as one
 /// XDMF grid, a vector field per mode named with its number and frequency
 /// (mode_01_2.241_Hz).
-void write_modes(fem::ElasticModel& fe, const fem::Modes& modes,
+void write_modes(fem::ElasticModel& fe, const linalg::Modes& modes,
                  const std::function<Vec(Vec)>& full,
                  const std::filesystem::path& file);
 

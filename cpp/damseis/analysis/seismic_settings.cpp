@@ -396,11 +396,12 @@ SeismicSettings read_seismic_settings(const input::Case& c,
   g.checkpoint_every = static_cast<int>(c.integer("run.checkpoint_every"));
   g.restart = c.boolean("run.restart");
   g.stop_at_step = static_cast<int>(c.integer("run.stop_at_step"));
-  g.factorization = fem::parse_factorization(c.string("solver.factorization"));
+  g.factorization =
+      linalg::parse_factorization(c.string("solver.factorization"));
   // PETSc's own (non-supernodal) factorisation is the fastest for 2D
   // sections but far too slow in 3D, where MUMPS wins (bench/).
-  if (g.factorization == fem::Factorization::automatic && dim == 3)
-    g.factorization = fem::Factorization::mumps;
+  if (g.factorization == linalg::Factorization::automatic && dim == 3)
+    g.factorization = linalg::Factorization::mumps;
   return g;
 }
 

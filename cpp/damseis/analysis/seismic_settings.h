@@ -4,10 +4,10 @@
 #pragma once
 
 #include <array>
-#include <damseis/case/case.h>
 #include <damseis/dynamics/newmark.h>
-#include <damseis/fem/direct_solver.h>
 #include <damseis/fem/elastic_model.h>
+#include <damseis/input/case.h>
+#include <damseis/linalg/direct_solver.h>
 #include <string>
 #include <utility>
 #include <vector>
@@ -62,7 +62,7 @@ struct SeismicSettings
   bool restart = false;     ///< resume from the output folder's checkpoint
   int stop_at_step = 0;     ///< checkpoint and stop there (0: run to the end)
   bool plots = true;
-  fem::Factorization factorization = fem::Factorization::automatic;
+  linalg::Factorization factorization = linalg::Factorization::automatic;
 };
 
 /// Adds the shared keys. `directions` are the ground-motion components the

@@ -25,7 +25,7 @@ struct StaticStageSettings
 {
   int increments = 5; ///< of the loads after the dead weight
   dynamics::NewtonSettings newton;
-  fem::Factorization factorization = fem::Factorization::automatic;
+  linalg::Factorization factorization = linalg::Factorization::automatic;
   /// Dynamic relaxation: the two frequencies of the (critical) Rayleigh
   /// damping [Hz] (the fundamental one first), steps per period, ramp and
   /// hold durations in fundamental periods.

@@ -1,7 +1,7 @@
 #include "checkpoint_file.h"
 #include <cmath>
 #include <cstring>
-#include <damseis/case/case.h>
+#include <damseis/input/case.h>
 #include <nlohmann/json.hpp>
 #include <sstream>
 

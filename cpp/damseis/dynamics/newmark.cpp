@@ -26,7 +26,7 @@ double RayleighDamping::ratio_at(double f_hz) const
 
 LinearNewmark::LinearNewmark(Mat M, Mat K, RayleighDamping damping,
                              TimeScheme scheme,
-                             fem::Factorization factorization)
+                             linalg::Factorization factorization)
     : _M(M), _K(K), _damping(damping), _scheme(scheme)
 {
   if (!(scheme.dt > 0.0 && std::isfinite(scheme.dt)))
@@ -46,7 +46,7 @@ LinearNewmark::LinearNewmark(Mat M, Mat K, RayleighDamping damping,
   MatAXPY(_Keff, _cM, M, SUBSET_NONZERO_PATTERN);
   MPI_Comm comm;
   PetscObjectGetComm(reinterpret_cast<PetscObject>(K), &comm);
-  _solver = std::make_unique<fem::DirectSolver>(comm, factorization);
+  _solver = std::make_unique<linalg::DirectSolver>(comm, factorization);
   _solver->factorize(_Keff);
 
   for (std::array<Vec, 3>* set : {&_x, &_Mx, &_Kx})

@@ -5,7 +5,7 @@
 #pragma once
 
 #include <array>
-#include <damseis/fem/direct_solver.h>
+#include <damseis/linalg/direct_solver.h>
 #include <memory>
 #include <petscmat.h>
 #include <string>
@@ -45,7 +45,7 @@ public:
   /// expected as identity rows of K and zero rows of M with a zero load.
   LinearNewmark(
       Mat M, Mat K, RayleighDamping damping, TimeScheme scheme,
-      fem::Factorization factorization = fem::Factorization::automatic);
+      linalg::Factorization factorization = linalg::Factorization::automatic);
   ~LinearNewmark();
   LinearNewmark(const LinearNewmark&) = delete;
   LinearNewmark& operator=(const LinearNewmark&) = delete;
@@ -60,7 +60,7 @@ public:
   Vec v() const { return _x[1]; }
   Vec a() const { return _x[2]; }
   const TimeScheme& scheme() const { return _scheme; }
-  const fem::DirectSolver& solver() const { return *_solver; }
+  const linalg::DirectSolver& solver() const { return *_solver; }
 
 private:
   Mat _M, _K;
@@ -68,7 +68,7 @@ private:
   TimeScheme _scheme;
   double _cM = 0.0, _cK = 0.0; ///< K_eff = c_M M + c_K K
   Mat _Keff = nullptr;
-  std::unique_ptr<fem::DirectSolver> _solver;
+  std::unique_ptr<linalg::DirectSolver> _solver;
   /// (u, v, a), their M images and K images; f is the current load.
   std::array<Vec, 3> _x{}, _Mx{}, _Kx{};
   Vec _f = nullptr, _rhs = nullptr, _u_next = nullptr, _image_next = nullptr;

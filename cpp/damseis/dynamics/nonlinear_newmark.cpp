@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <damseis/fem/duplicate_matrix.h>
+#include <damseis/linalg/duplicate_matrix.h>
 #include <functional>
 #include <string>
 #include <vector>
@@ -37,7 +37,7 @@ const bool trace = std::getenv("DAMSEIS_NEWTON_TRACE") != nullptr;
 /// On success u holds the solution and the system's trial state matches it.
 bool newton(const std::function<bool(Vec, Vec)>& residual,
             const std::function<void(Mat)>& jacobian,
-            const NonlinearSystem& system, const fem::DirectSolver& initial,
+            const NonlinearSystem& system, const linalg::DirectSolver& initial,
             int level, Mat J, TangentSolver& tangent, double reference, Vec u,
             Vec R, Vec du, const NewtonSettings& s, StepReport& report)
 {
@@ -186,16 +186,16 @@ bool newton(const std::function<bool(Vec, Vec)>& residual,
 
 StepReport solve_static(NonlinearSystem& system, Mat K0, Vec F_from, Vec F_to,
                         int increments, Vec u, const NewtonSettings& settings,
-                        fem::Factorization factorization)
+                        linalg::Factorization factorization)
 {
   MPI_Comm comm;
   PetscObjectGetComm(reinterpret_cast<PetscObject>(K0), &comm);
   // The tangent may be indefinite (softening): MUMPS' LU pivots.
-  fem::DirectSolver initial(comm, factorization);
+  linalg::DirectSolver initial(comm, factorization);
   TangentSolver tangent_solver(comm, settings.krylov_rtol,
                                settings.krylov_max_iterations);
   initial.factorize(K0);
-  Mat J = fem::duplicate_matrix(K0, MAT_DO_NOT_COPY_VALUES);
+  Mat J = linalg::duplicate_matrix(K0, MAT_DO_NOT_COPY_VALUES);
   Vec F, R, du, ut, fint;
   for (Vec* x : {&F, &R, &du, &ut, &fint})
     VecDuplicate(u, x);
@@ -261,7 +261,7 @@ StepReport solve_static(NonlinearSystem& system, Mat K0, Vec F_from, Vec F_to,
 NonlinearNewmark::NonlinearNewmark(Mat M, Mat K0, RayleighDamping damping,
                                    TimeScheme scheme, NonlinearSystem& system,
                                    NewtonSettings settings,
-                                   fem::Factorization factorization)
+                                   linalg::Factorization factorization)
     : _M(M), _K0(K0), _damping(damping), _scheme(scheme), _system(system),
       _settings(settings), _factorization(factorization)
 {
@@ -299,13 +299,13 @@ NonlinearNewmark::~NonlinearNewmark()
     MatDestroy(&_J);
 }
 
-const fem::DirectSolver& NonlinearNewmark::solver() const
+const linalg::DirectSolver& NonlinearNewmark::solver() const
 {
   return *_initial.at(0).solver;
 }
 
-const fem::DirectSolver& NonlinearNewmark::initial_solver(int level,
-                                                          StepReport& report)
+const linalg::DirectSolver& NonlinearNewmark::initial_solver(int level,
+                                                             StepReport& report)
 {
   auto it = _initial.find(level);
   if (it != _initial.end())
@@ -318,12 +318,12 @@ const fem::DirectSolver& NonlinearNewmark::initial_solver(int level,
   const double w = 1.0 + _scheme.alpha;
   const double a0 = 1.0 / (beta * dt * dt), a1 = gamma / (beta * dt);
   // J0 = a0 M + (1 + alpha)(a1 C + K0).
-  Mat J0 = fem::duplicate_matrix(_K0, MAT_COPY_VALUES);
+  Mat J0 = linalg::duplicate_matrix(_K0, MAT_COPY_VALUES);
   MatScale(J0, w * (1.0 + a1 * _damping.b_stiffness));
   MatAXPY(J0, a0 + w * a1 * _damping.a_mass, _M, SUBSET_NONZERO_PATTERN);
   MPI_Comm comm;
   PetscObjectGetComm(reinterpret_cast<PetscObject>(_K0), &comm);
-  auto solver = std::make_unique<fem::DirectSolver>(comm, _factorization);
+  auto solver = std::make_unique<linalg::DirectSolver>(comm, _factorization);
   solver->factorize(J0);
   if (level > 0)
   {
@@ -391,9 +391,9 @@ bool NonlinearNewmark::solve_step(double dt, Vec f_next, int level,
   const double a0 = 1.0 / (beta * dt * dt), a1 = gamma / (beta * dt),
                a2 = 1.0 / (beta * dt), a3 = 0.5 / beta - 1.0;
   const double aM = _damping.a_mass, bK = _damping.b_stiffness;
-  const fem::DirectSolver& J0 = initial_solver(level, report);
+  const linalg::DirectSolver& J0 = initial_solver(level, report);
   if (!_J)
-    _J = fem::duplicate_matrix(_K0, MAT_DO_NOT_COPY_VALUES);
+    _J = linalg::duplicate_matrix(_K0, MAT_DO_NOT_COPY_VALUES);
 
   // Constant part of the HHT residual:
   // g = -alpha (C v + f_int) - (1 + alpha) f' + alpha f.

@@ -133,7 +133,7 @@ struct StaticStepFailure : StepFailure
 /// throws StaticStepFailure, u then holding the last converged state.
 StepReport solve_static(NonlinearSystem& system, Mat K0, Vec F_from, Vec F_to,
                         int increments, Vec u, const NewtonSettings& settings,
-                        fem::Factorization factorization);
+                        linalg::Factorization factorization);
 
 class NonlinearNewmark
 {
@@ -141,7 +141,7 @@ public:
   /// M, K0 must stay alive while the integrator is used.
   NonlinearNewmark(Mat M, Mat K0, RayleighDamping damping, TimeScheme scheme,
                    NonlinearSystem& system, NewtonSettings settings,
-                   fem::Factorization factorization);
+                   linalg::Factorization factorization);
   ~NonlinearNewmark();
   NonlinearNewmark(const NonlinearNewmark&) = delete;
   NonlinearNewmark& operator=(const NonlinearNewmark&) = delete;
@@ -158,7 +158,7 @@ public:
   Vec f_int() const { return _fint; }
   const TimeScheme& scheme() const { return _scheme; }
   /// The factorisation of the initial effective matrix (full step).
-  const fem::DirectSolver& solver() const;
+  const linalg::DirectSolver& solver() const;
 
 private:
   /// One step of length dt from (u, v, a, f, f_int) to f_next; `level` is
@@ -168,19 +168,19 @@ private:
   /// on failure).
   bool solve_step(double dt, Vec f_next, int level, StepReport& report);
   /// The initial effective matrix for a step dt / 2^level, factorised.
-  const fem::DirectSolver& initial_solver(int level, StepReport& report);
+  const linalg::DirectSolver& initial_solver(int level, StepReport& report);
 
   Mat _M, _K0;
   RayleighDamping _damping;
   TimeScheme _scheme;
   NonlinearSystem& _system;
   NewtonSettings _settings;
-  fem::Factorization _factorization;
+  linalg::Factorization _factorization;
   /// Per step length dt / 2^level: J0 and its factors.
   struct Level
   {
     Mat J0 = nullptr;
-    std::unique_ptr<fem::DirectSolver> solver;
+    std::unique_ptr<linalg::DirectSolver> solver;
   };
   std::map<int, Level> _initial;
   /// The level whose matrices the last initial_solver() call returned.

@@ -11,7 +11,7 @@ namespace
 /// is reported through `failed`.
 struct ShellContext
 {
-  const fem::DirectSolver* factors = nullptr;
+  const linalg::DirectSolver* factors = nullptr;
   bool failed = false;
 };
 
@@ -35,8 +35,8 @@ PetscErrorCode apply_factors(PC pc, Vec x, Vec y)
 
 TangentSolver::TangentSolver(MPI_Comm comm, double rtol, int max_iterations)
     : _rtol(rtol), _max_iterations(max_iterations),
-      _tangent(std::make_unique<fem::DirectSolver>(
-          comm, fem::Factorization::automatic))
+      _tangent(std::make_unique<linalg::DirectSolver>(
+          comm, linalg::Factorization::automatic))
 {
   if (_max_iterations <= 0)
     return;
@@ -63,7 +63,7 @@ TangentSolver::~TangentSolver()
     KSPDestroy(&_krylov);
 }
 
-Direction TangentSolver::solve(Mat J, const fem::DirectSolver& initial,
+Direction TangentSolver::solve(Mat J, const linalg::DirectSolver& initial,
                                int level, Vec R, Vec du, double abs_tol)
 {
   _last_iterations = 0;

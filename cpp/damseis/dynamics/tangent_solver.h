@@ -10,7 +10,7 @@
 // the preconditioner of the following iterations of the step.
 #pragma once
 
-#include <damseis/fem/direct_solver.h>
+#include <damseis/linalg/direct_solver.h>
 #include <memory>
 #include <petscksp.h>
 
@@ -39,7 +39,7 @@ public:
   /// the factorised initial matrix for the step length `level`; a stored
   /// tangent factorisation is used as preconditioner only for the same
   /// level. J may be reassembled after the call (the factors are kept).
-  Direction solve(Mat J, const fem::DirectSolver& initial, int level, Vec R,
+  Direction solve(Mat J, const linalg::DirectSolver& initial, int level, Vec R,
                   Vec du, double abs_tol);
 
   /// Forgets the stored tangent factors: GMRES starts again from the
@@ -57,7 +57,7 @@ private:
   /// LU of J: PETSc's serially (its solves cost a third of MUMPS' here; a
   /// zero pivot is reported and the initial matrix used instead), MUMPS in
   /// parallel.
-  std::unique_ptr<fem::DirectSolver> _tangent;
+  std::unique_ptr<linalg::DirectSolver> _tangent;
   int _tangent_level = -1; ///< level of the stored factors (-1: none)
   int _last_iterations = 0;
   double _last_factor_seconds = 0.0;

@@ -4,7 +4,7 @@
 
 #include "arch_dam.h"
 
-#include <damseis/case/case.h>
+#include <damseis/input/case.h>
 
 namespace damseis::geometry
 {

@@ -3,7 +3,7 @@
 #include "gravity_dam.h"
 #include <algorithm>
 #include <cmath>
-#include <damseis/case/case.h>
+#include <damseis/input/case.h>
 #include <iomanip>
 #include <sstream>
 #include <unistd.h>

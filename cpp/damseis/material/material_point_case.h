@@ -3,7 +3,7 @@
 /// driver ([path]); used by demos/material_point.
 #pragma once
 
-#include "damseis/case/case.h"
+#include "damseis/input/case.h"
 #include "damseis/material/path.h"
 
 #include <string>

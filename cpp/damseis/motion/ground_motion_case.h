@@ -9,7 +9,7 @@
 #include "artificial.h"
 #include "design_spectrum.h"
 #include "record.h"
-#include <damseis/case/case.h>
+#include <damseis/input/case.h>
 #include <filesystem>
 #include <string>
 #include <vector>

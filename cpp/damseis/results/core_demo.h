@@ -6,7 +6,7 @@
 #pragma once
 
 #include <cstdio>
-#include <damseis/case/command_line.h>
+#include <damseis/input/command_line.h>
 #include <damseis/results/output_folder.h>
 #include <filesystem>
 #include <fstream>

@@ -1,7 +1,7 @@
 #include "output_folder.h"
 #include <algorithm>
 #include <cstdlib>
-#include <damseis/case/case.h>
+#include <damseis/input/case.h>
 #include <fstream>
 #include <set>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "damseis/case/case.h"
+#include "damseis/input/case.h"
 
 #include <algorithm>
 #include <cctype>

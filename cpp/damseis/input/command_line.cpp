@@ -1,4 +1,4 @@
-#include "damseis/case/command_line.h"
+#include "damseis/input/command_line.h"
 
 #include <CLI/CLI.hpp>
 #include <algorithm>

@@ -3,7 +3,7 @@
 
 #include <petscmat.h>
 
-namespace damseis::fem
+namespace damseis::linalg
 {
 /// MatDuplicate(A, option), keeping the block-size-specialised products of
 /// (Seq/MPI)BAIJ matrices. PETSc 3.18's MatDuplicate of a BAIJ matrix
@@ -14,4 +14,4 @@ namespace damseis::fem
 /// parallel) are set to those of A; all other types are returned as
 /// MatDuplicate gives them.
 Mat duplicate_matrix(Mat A, MatDuplicateOption option);
-} // namespace damseis::fem
+} // namespace damseis::linalg

@@ -113,10 +113,10 @@ extern "C"
   }
 }
 
-namespace damseis::fem
+namespace damseis::linalg
 {
 long blas_single_column_calls()
 {
   return forwarded_calls.load(std::memory_order_relaxed);
 }
-} // namespace damseis::fem
+} // namespace damseis::linalg

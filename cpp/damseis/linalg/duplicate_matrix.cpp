@@ -1,6 +1,6 @@
 #include "duplicate_matrix.h"
 
-namespace damseis::fem
+namespace damseis::linalg
 {
 namespace
 {
@@ -40,4 +40,4 @@ Mat duplicate_matrix(Mat A, MatDuplicateOption option)
   }
   return B;
 }
-} // namespace damseis::fem
+} // namespace damseis::linalg

@@ -6,7 +6,7 @@
 #include <petscksp.h>
 #include <string>
 
-namespace damseis::fem
+namespace damseis::linalg
 {
 /// The factorisations PETSc offers here (bench/ compares them).
 enum class Factorization
@@ -73,4 +73,4 @@ private:
   bool _failed = false;    ///< the last factorize_lu failed
   double _factor_seconds = 0.0;
 };
-} // namespace damseis::fem
+} // namespace damseis::linalg

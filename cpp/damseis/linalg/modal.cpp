@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace damseis::fem
+namespace damseis::linalg
 {
 Modes::Modes(Modes&& other) noexcept
     : frequencies_hz(std::move(other.frequencies_hz)),
@@ -142,4 +142,4 @@ std::vector<Modes> solve_modes(Mat K, const std::vector<Mat>& Ms, int count,
   EPSDestroy(&eps);
   return out;
 }
-} // namespace damseis::fem
+} // namespace damseis::linalg

@@ -6,7 +6,7 @@
 #include <petscmat.h>
 #include <vector>
 
-namespace damseis::fem
+namespace damseis::linalg
 {
 /// Result of a modal analysis; the mode vectors are owned by this object.
 struct Modes
@@ -38,4 +38,4 @@ Modes solve_modes(Mat K, Mat M, int count);
 std::vector<Modes>
 solve_modes(Mat K, const std::vector<Mat>& Ms, int count,
             const std::function<void(KSP)>& with_K_factors = {});
-} // namespace damseis::fem
+} // namespace damseis::linalg

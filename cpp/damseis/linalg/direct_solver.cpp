@@ -2,7 +2,7 @@
 #include <chrono>
 #include <stdexcept>
 
-namespace damseis::fem
+namespace damseis::linalg
 {
 Factorization parse_factorization(const std::string& name)
 {
@@ -319,4 +319,4 @@ std::string DirectSolver::name() const
     return "auto";
   }
 }
-} // namespace damseis::fem
+} // namespace damseis::linalg
