@@ -15,9 +15,10 @@
 // Koyna section, 8 m mesh, rigid base; plane stress and plane strain.
 #include "fem_test_support.h"
 
-#include <damseis/analysis/run_support.h>
+#include <damseis/analysis/run_outputs.h>
 #include <damseis/fem/concrete_model.h>
 #include <damseis/geometry/gravity_dam.h>
+#include <damseis/linalg/petsc_vectors.h>
 
 #include <dolfinx/fem/petsc.h>
 
@@ -74,8 +75,6 @@ PVec loading(ElasticModel& fe, double scale)
   return u;
 }
 
-using damseis::analysis::to_function;
-
 TEST(ConcreteModel, ElasticModeReproducesLinearStiffness)
 {
   for (PlaneMode plane : {PlaneMode::plane_stress, PlaneMode::plane_strain})
@@ -92,7 +91,7 @@ TEST(ConcreteModel, ElasticModeReproducesLinearStiffness)
 
     PVec u = loading(*s.fe, 14.0);
     Function uf(s.fe->V());
-    to_function(u.vec(), uf);
+    damseis::linalg::to_function(u.vec(), uf);
     s.cm->update(uf, 0.01);
     PVec f = own(s.fe->assemble_gravity({0, 0, 0}));
     s.cm->assemble_internal_force(f.vec());
@@ -117,7 +116,7 @@ TEST(ConcreteModel, TangentMatchesFiniteDifferenceOfInternalForce)
       // smaller one (their local solve from zero is the harder one).
       PVec u = loading(*s.fe, mode == material::Mode::plastic ? 14.0 : 9.0);
       Function uf(s.fe->V());
-      to_function(u.vec(), uf);
+      damseis::linalg::to_function(u.vec(), uf);
       const double dt = 0.01;
       const auto stats = s.cm->update(uf, dt);
       ASSERT_EQ(stats.failed, 0);
@@ -136,11 +135,11 @@ TEST(ConcreteModel, TangentMatchesFiniteDifferenceOfInternalForce)
         PVec fm = own(s.fe->assemble_gravity({0, 0, 0}));
         PVec up = own(s.fe->assemble_gravity({0, 0, 0}));
         VecWAXPY(up.vec(), h, d.vec(), u.vec());
-        to_function(up.vec(), uf);
+        damseis::linalg::to_function(up.vec(), uf);
         ASSERT_EQ(s.cm->update(uf, dt).failed, 0);
         s.cm->assemble_internal_force(fp.vec());
         VecWAXPY(up.vec(), -h, d.vec(), u.vec());
-        to_function(up.vec(), uf);
+        damseis::linalg::to_function(up.vec(), uf);
         ASSERT_EQ(s.cm->update(uf, dt).failed, 0);
         s.cm->assemble_internal_force(fm.vec());
         VecAXPY(fp.vec(), -1.0, fm.vec());
@@ -168,7 +167,7 @@ TEST(ConcreteModel, TangentChangeMatchesFullAssembly)
     ConcreteCase s = make(material::Mode::viscoplastic, plane, 0.5e6);
     PVec u = loading(*s.fe, 9.0);
     Function uf(s.fe->V());
-    to_function(u.vec(), uf);
+    damseis::linalg::to_function(u.vec(), uf);
     const auto stats = s.cm->update(uf, 0.01);
     ASSERT_EQ(stats.failed, 0);
     ASSERT_GT(stats.inelastic, 10) << "the load must make points yield";

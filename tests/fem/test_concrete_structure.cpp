@@ -22,12 +22,13 @@
 #include <damseis/analysis/concrete_system.h>
 #include <damseis/analysis/linear_seismic.h>
 #include <damseis/analysis/nonlinear_seismic.h>
-#include <damseis/analysis/run_support.h>
+#include <damseis/analysis/run_outputs.h>
 #include <damseis/analysis/static_stage.h>
 #include <damseis/dynamics/newmark.h>
 #include <damseis/dynamics/nonlinear_newmark.h>
 #include <damseis/fem/concrete_model.h>
 #include <damseis/geometry/gravity_dam.h>
+#include <damseis/linalg/petsc_vectors.h>
 
 #include <dolfinx/fem/petsc.h>
 #include <fstream>
@@ -43,8 +44,6 @@ namespace tags = damseis::tags;
 namespace material = damseis::material;
 namespace dynamics = damseis::dynamics;
 using Function = dolfinx::fem::Function<double>;
-
-using damseis::analysis::to_function;
 
 using damseis::analysis::ConcreteSystem;
 
@@ -243,7 +242,7 @@ double bar_energy_ratio(int nx, int degree)
     bool ok = false;
     for (int it = 0; it < 40 && !ok; ++it)
     {
-      to_function(u.vec(), uf);
+      damseis::linalg::to_function(u.vec(), uf);
       const auto st = cm.update(uf, 0.0);
       EXPECT_EQ(st.failed, 0) << "d / peak = " << d / peak << ", iteration "
                               << it << ", inelastic " << st.inelastic;
@@ -515,7 +514,7 @@ TEST(ConcreteStructure, DynamicRelaxationReachesTheStaticSolution)
     for (std::size_t i = 0; i < np; ++i)
       inelastic += (kt[i] > 0.0 || kc[i] > 0.0) ? 1 : 0;
     inelastic = static_cast<int>(global_sum(inelastic));
-    std::vector<double> x = damseis::analysis::owned_values(u.vec());
+    std::vector<double> x = damseis::linalg::owned_values(u.vec());
     return x;
   };
   int n_newton = 0, n_relax = 0;

@@ -121,4 +121,41 @@ std::optional<CheckpointData> read_checkpoint(MPI_Comm comm,
                             "start over");
   }
 }
+
+const std::vector<double>& checkpoint_array(const CheckpointData& data,
+                                            const std::string& name,
+                                            std::size_t size)
+{
+  const auto it = data.arrays.find(name);
+  if (it == data.arrays.end())
+    throw std::runtime_error("no array " + name);
+  if (size != 0 && it->second.size() != size)
+    throw std::runtime_error("array " + name + " has " +
+                             std::to_string(it->second.size()) +
+                             " values, expected " + std::to_string(size));
+  return it->second;
+}
+
+void restore_collectively(MPI_Comm comm, const std::filesystem::path& dir,
+                          const std::function<void()>& restore)
+{
+  std::string what;
+  try
+  {
+    restore();
+  }
+  catch (const std::exception& e)
+  {
+    what = e.what();
+  }
+  int ok = what.empty() ? 1 : 0;
+  MPI_Allreduce(MPI_IN_PLACE, &ok, 1, MPI_INT, MPI_MIN, comm);
+  if (!ok)
+  {
+    throw input::InputError(
+        "the checkpoint in " + dir.string() + " does not fit this run (" +
+        (what.empty() ? std::string("on another rank") : what.substr(0, 120)) +
+        "); remove it (or set run.restart = false) to start over");
+  }
+}
 } // namespace damseis::analysis

@@ -5,8 +5,11 @@
 
 #include <damseis/checkpoint/checkpoint_file.h>
 #include <filesystem>
+#include <functional>
 #include <mpi.h>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace damseis::analysis
 {
@@ -27,4 +30,15 @@ void write_checkpoint(MPI_Comm comm, const std::filesystem::path& dir,
 std::optional<CheckpointData> read_checkpoint(MPI_Comm comm,
                                               const std::filesystem::path& dir,
                                               std::uint64_t print);
+
+/// The array `name` of a checkpoint with `size` values (0: any size);
+/// std::runtime_error otherwise.
+const std::vector<double>& checkpoint_array(const CheckpointData& data,
+                                            const std::string& name,
+                                            std::size_t size = 0);
+/// Runs `restore` (reading a checkpoint into the run) on every rank; a
+/// failure on any rank (a missing or mis-sized array) becomes
+/// input::InputError on all of them. Collective.
+void restore_collectively(MPI_Comm comm, const std::filesystem::path& dir,
+                          const std::function<void()>& restore);
 } // namespace damseis::analysis

@@ -4,9 +4,14 @@
 // state.
 #pragma once
 
-#include "run_support.h"
+#include "checkpoint.h"
+#include "ground_motion_load.h"
+#include "modal_stage.h"
+#include "run_outputs.h"
+#include "stop_signals.h"
 #include <damseis/dynamics/nonlinear_newmark.h>
 #include <damseis/fem/concrete_model.h>
+#include <damseis/linalg/petsc_vectors.h>
 
 namespace damseis::analysis
 {
@@ -19,7 +24,7 @@ public:
   }
   bool trial(Vec u, double dt) override
   {
-    to_function(u, _u);
+    linalg::to_function(u, _u);
     last = _m.update(_u, quasi_static ? 0.0 : dt);
     count(last);
     return last.failed == 0;

@@ -1,12 +1,16 @@
 #include "linear_seismic.h"
 #include "checkpoint.h"
-#include "run_support.h"
+#include "ground_motion_load.h"
+#include "modal_stage.h"
+#include "run_outputs.h"
+#include "stop_signals.h"
 #include <chrono>
 #include <cmath>
 #include <csignal>
 #include <damseis/fem/tied_dofs.h>
 #include <damseis/geometry/tags.h>
 #include <damseis/linalg/modal.h>
+#include <damseis/linalg/petsc_vectors.h>
 #include <damseis/results/displacement_envelope.h>
 #include <damseis/results/face_points.h>
 #include <damseis/results/field_writer.h>
@@ -64,7 +68,7 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     }
   }
   // Full-space vector of a system vector, and system load of a full one.
-  Vector u_full = tie ? row_vector(tie) : Vector(nullptr, false);
+  Vector u_full = tie ? linalg::row_vector(tie) : Vector(nullptr, false);
   auto full = [&](Vec x) -> Vec
   {
     if (!tie)
@@ -81,7 +85,7 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
       VecCopy(f_full, y);
       return Vector(y, false);
     }
-    Vector y = column_vector(tie);
+    Vector y = linalg::column_vector(tie);
     MatMultTranspose(tie, f_full, y.vec());
     return y;
   };
@@ -99,7 +103,7 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   for (Vec extra : extra_static_loads)
     VecAXPY(F_full.vec(), 1.0, extra);
   Vector F = system_load(F_full.vec());
-  Vector u_static = column_vector(K.mat());
+  Vector u_static = linalg::column_vector(K.mat());
   // K u = F is solved with the modal analysis' factors of K (one
   // factorisation for both).
   const double setup_seconds = seconds_since(wall_start);
@@ -130,7 +134,7 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   dynamics::LinearNewmark newmark(M.mat(), K.mat(), modal.damping, s.scheme,
                                   s.factorization);
   const GroundMotionLoad ground(fe, s, M.mat(), tie);
-  Vector f = column_vector(K.mat());
+  Vector f = linalg::column_vector(K.mat());
   auto set_load = [&](int k) { ground.assemble(k, nullptr, f.vec()); };
 
   // Outputs: every input check has passed by now.
@@ -147,7 +151,8 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     MatMatMult(B.mat(), tie, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &BP);
     B = Matrix(BP, false);
   }
-  Vector s_static = row_vector(B.mat()), s_field = row_vector(B.mat());
+  Vector s_static = linalg::row_vector(B.mat()),
+         s_field = linalg::row_vector(B.mat());
   MatMult(B.mat(), u_static.vec(), s_static.vec());
   const auto dam_cells = region_cells(model, tags::dam);
   results::StressEnvelope envelope(*fe.S(), dam_cells);
@@ -181,23 +186,24 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   if (restart)
   {
     k0 = restart->step;
-    Vector u = column_vector(K.mat()), v = column_vector(K.mat()),
-           a = column_vector(K.mat());
+    Vector u = linalg::column_vector(K.mat()),
+           v = linalg::column_vector(K.mat()),
+           a = linalg::column_vector(K.mat());
     const CheckpointData& d = *restart;
-    restore_collectively(comm, ckpt_dir,
-                         [&]
-                         {
-                           set_owned_values(u.vec(), checkpoint_array(d, "u"));
-                           set_owned_values(v.vec(), checkpoint_array(d, "v"));
-                           set_owned_values(a.vec(), checkpoint_array(d, "a"));
-                           envelope.restore(checkpoint_array(d, "env_max"),
-                                            checkpoint_array(d, "env_t_max"),
-                                            checkpoint_array(d, "env_min"),
-                                            checkpoint_array(d, "env_t_min"));
-                           hist = checkpoint_array(d, "history", hist.size());
-                           if (face_u)
-                             face_u->restore(checkpoint_array(d, "face_u"));
-                         });
+    restore_collectively(
+        comm, ckpt_dir,
+        [&]
+        {
+          linalg::set_owned_values(u.vec(), checkpoint_array(d, "u"));
+          linalg::set_owned_values(v.vec(), checkpoint_array(d, "v"));
+          linalg::set_owned_values(a.vec(), checkpoint_array(d, "a"));
+          envelope.restore(
+              checkpoint_array(d, "env_max"), checkpoint_array(d, "env_t_max"),
+              checkpoint_array(d, "env_min"), checkpoint_array(d, "env_t_min"));
+          hist = checkpoint_array(d, "history", hist.size());
+          if (face_u)
+            face_u->restore(checkpoint_array(d, "face_u"));
+        });
     set_load(k0);
     newmark.set_state(u.vec(), v.vec(), a.vec(), f.vec());
     results::print(comm, "restarting from the checkpoint at step " +
@@ -205,7 +211,8 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   }
   else
   {
-    Vector zero = column_vector(K.mat()), a0 = column_vector(K.mat());
+    Vector zero = linalg::column_vector(K.mat()),
+           a0 = linalg::column_vector(K.mat());
     ground.initial_acceleration(a0.vec());
     set_load(0);
     newmark.set_state(zero.vec(), zero.vec(), a0.vec(), f.vec());
@@ -216,7 +223,7 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
       out_dir / (k0 == 0 ? std::string("fields.xdmf")
                          : "fields_from_step" + std::to_string(k0) + ".xdmf"));
   dolfinx::fem::Function<double> u_fn(fe.V());
-  Vector u_out = tie ? row_vector(tie) : column_vector(K.mat());
+  Vector u_out = tie ? linalg::row_vector(tie) : linalg::column_vector(K.mat());
 
   auto record_state = [&](int k, double t, Vec ud)
   {
@@ -243,7 +250,7 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
       VecCopy(uf, u_out.vec());
       if (s.stress_total)
         VecAXPY(u_out.vec(), 1.0, full(u_static.vec()));
-      to_function(u_out.vec(), u_fn);
+      linalg::to_function(u_out.vec(), u_fn);
       writer.write(u_fn, std::span<const double>(sa, ns), t);
     }
     VecRestoreArrayRead(s_field.vec(), &sa);
@@ -252,9 +259,9 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   {
     CheckpointData data;
     data.step = k;
-    data.arrays = {{"u", owned_values(newmark.u())},
-                   {"v", owned_values(newmark.v())},
-                   {"a", owned_values(newmark.a())},
+    data.arrays = {{"u", linalg::owned_values(newmark.u())},
+                   {"v", linalg::owned_values(newmark.v())},
+                   {"a", linalg::owned_values(newmark.a())},
                    {"history", hist}};
     auto span_vec = [](std::span<const double> x)
     { return std::vector<double>(x.begin(), x.end()); };

@@ -1,13 +1,17 @@
 #include "nonlinear_seismic.h"
 #include "checkpoint.h"
 #include "concrete_system.h"
+#include "ground_motion_load.h"
 #include "linear_seismic.h"
-#include "run_support.h"
+#include "modal_stage.h"
+#include "run_outputs.h"
 #include "static_stage.h"
+#include "stop_signals.h"
 #include <chrono>
 #include <cmath>
 #include <damseis/fem/concrete_model.h>
 #include <damseis/geometry/tags.h>
+#include <damseis/linalg/petsc_vectors.h>
 #include <damseis/results/displacement_envelope.h>
 #include <damseis/results/face_points.h>
 #include <damseis/results/field_writer.h>
@@ -206,7 +210,7 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   std::array<double, 3> g = {0, 0, 0};
   g[dim - 1] = -s.gravity;
   Vector F_g(fe.assemble_gravity(g), false);
-  Vector F_static = column_vector(K.mat());
+  Vector F_static = linalg::column_vector(K.mat());
   VecCopy(F_g.vec(), F_static.vec());
   if (wet)
   {
@@ -215,7 +219,7 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   }
   for (Vec extra : extra_static_loads)
     VecAXPY(F_static.vec(), 1.0, extra);
-  Vector u_static = column_vector(K.mat());
+  Vector u_static = linalg::column_vector(K.mat());
   StaticStageSettings stage;
   stage.increments = concrete.static_increments;
   stage.newton = concrete.newton;
@@ -226,7 +230,7 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
       solve_static_stage(system, K.mat(), M.mat(), F_g.vec(), F_static.vec(),
                          u_static.vec(), stage);
   const std::vector<double> sig_static(cm.stress().begin(), cm.stress().end());
-  Vector fint0 = column_vector(K.mat());
+  Vector fint0 = linalg::column_vector(K.mat());
   system.internal_force(fint0.vec());
   const double static_seconds = seconds_since(wall_start) - modal.seconds;
   results::print(comm,
@@ -244,7 +248,7 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   dynamics::NonlinearNewmark newmark(M.mat(), K.mat(), modal.damping, s.scheme,
                                      system, newton_settings, s.factorization);
   const GroundMotionLoad ground(fe, s, M.mat());
-  Vector f = column_vector(K.mat());
+  Vector f = linalg::column_vector(K.mat());
   auto set_load = [&](int k) { ground.assemble(k, F_static.vec(), f.vec()); };
 
   std::filesystem::create_directories(out_dir);
@@ -305,18 +309,20 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   if (restart)
   {
     k0 = restart->step;
-    Vector u = column_vector(K.mat()), v = column_vector(K.mat()),
-           a = column_vector(K.mat()), fi = column_vector(K.mat());
+    Vector u = linalg::column_vector(K.mat()),
+           v = linalg::column_vector(K.mat()),
+           a = linalg::column_vector(K.mat()),
+           fi = linalg::column_vector(K.mat());
     const CheckpointData& d = *restart;
     const std::size_t np = static_cast<std::size_t>(n_pts);
     restore_collectively(
         comm, ckpt_dir,
         [&]
         {
-          set_owned_values(u.vec(), checkpoint_array(d, "u"));
-          set_owned_values(v.vec(), checkpoint_array(d, "v"));
-          set_owned_values(a.vec(), checkpoint_array(d, "a"));
-          set_owned_values(fi.vec(), checkpoint_array(d, "f_int"));
+          linalg::set_owned_values(u.vec(), checkpoint_array(d, "u"));
+          linalg::set_owned_values(v.vec(), checkpoint_array(d, "v"));
+          linalg::set_owned_values(a.vec(), checkpoint_array(d, "a"));
+          linalg::set_owned_values(fi.vec(), checkpoint_array(d, "f_int"));
           cm.restore(d.arrays);
           envelope.restore(
               checkpoint_array(d, "env_max"), checkpoint_array(d, "env_t_max"),
@@ -343,7 +349,8 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   }
   else
   {
-    Vector v0 = column_vector(K.mat()), a0 = column_vector(K.mat());
+    Vector v0 = linalg::column_vector(K.mat()),
+           a0 = linalg::column_vector(K.mat());
     ground.initial_acceleration(a0.vec());
     set_load(0);
     newmark.set_state(u_static.vec(), v0.vec(), a0.vec(), f.vec(), fint0.vec());
@@ -387,7 +394,7 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     }
     if (k % s.output_every == 0)
     {
-      to_function(newmark.u(), u_fn);
+      linalg::to_function(newmark.u(), u_fn);
       writer.write(u_fn, s_field, t,
                    {cm.kappa_t(), cm.kappa_c(), cm.strain_rate()});
     }
@@ -397,10 +404,10 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     CheckpointData data;
     data.step = k;
     data.arrays = cm.save();
-    data.arrays["u"] = owned_values(newmark.u());
-    data.arrays["v"] = owned_values(newmark.v());
-    data.arrays["a"] = owned_values(newmark.a());
-    data.arrays["f_int"] = owned_values(newmark.f_int());
+    data.arrays["u"] = linalg::owned_values(newmark.u());
+    data.arrays["v"] = linalg::owned_values(newmark.v());
+    data.arrays["a"] = linalg::owned_values(newmark.a());
+    data.arrays["f_int"] = linalg::owned_values(newmark.f_int());
     data.arrays["history"] = hist;
     data.arrays["newton"] = stats;
     auto span_vec = [](std::span<const double> x)

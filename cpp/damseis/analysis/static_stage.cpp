@@ -39,7 +39,8 @@ std::pair<int, double> relax(ConcreteSystem& system, Mat K, Mat M, Vec F_g,
   dynamics::NonlinearNewmark integrator(
       M, K, dynamics::RayleighDamping::from_ratio(1.0, s.f1_hz, s.f2_hz),
       scheme, system, newton, s.factorization);
-  Vector zero = column_vector(K), F = column_vector(K), fint = column_vector(K);
+  Vector zero = linalg::column_vector(K), F = linalg::column_vector(K),
+         fint = linalg::column_vector(K);
   load_at(from, F_g, F_static, F.vec());
   system.internal_force(fint.vec());
   integrator.set_state(u, zero.vec(), zero.vec(), F.vec(), fint.vec());
@@ -91,12 +92,12 @@ StaticStageReport solve_static_stage(ConcreteSystem& system, Mat K, Mat M,
     report.iterations += r.iterations;
     report.cuts += r.cuts;
   };
-  Vector zero = column_vector(K);
+  Vector zero = linalg::column_vector(K);
   VecSet(u, 0.0);
   add(dynamics::solve_static(system, K, zero.vec(), F_g, 1, u, s.newton,
                              s.factorization));
   // Load control up to relax_from (the loads after the dead weight).
-  Vector F_part = column_vector(K);
+  Vector F_part = linalg::column_vector(K);
   Vec F_to = F_static;
   if (s.relax_from < 1.0)
   {
@@ -132,7 +133,7 @@ StaticStageReport solve_static_stage(ConcreteSystem& system, Mat K, Mat M,
   report.relaxation_final_speed = speed;
   // The equilibrium at the full load from the relaxed state (solve_static
   // needs distinct start and end loads).
-  Vector start = column_vector(K);
+  Vector start = linalg::column_vector(K);
   VecCopy(F_static, start.vec());
   try
   {

@@ -1,47 +1,26 @@
-// Pieces shared by the seismic analysis engines (linear_seismic.cpp,
-// nonlinear_seismic.cpp): PETSc vector helpers, stop signals, modal
-// analysis and Rayleigh damping, the crest history and the face tables.
+// What a seismic run reports: the model line and size estimate, the crest
+// history, the face and point tables, stress extremes and summary.json.
 #pragma once
 
-#include "checkpoint.h"
+#include "modal_stage.h"
 #include "seismic_settings.h"
+#include <array>
 #include <chrono>
 #include <damseis/fem/elastic_model.h>
-#include <damseis/linalg/modal.h>
 #include <damseis/results/stress_envelope.h>
-#include <dolfinx/la/petsc.h>
 #include <filesystem>
-#include <functional>
 #include <nlohmann/json.hpp>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace damseis::analysis
 {
-/// A new zero vector with the layout of the columns (rows) of A.
-dolfinx::la::petsc::Vector column_vector(Mat A);
-dolfinx::la::petsc::Vector row_vector(Mat A);
-/// Copies `x` (owned values) into the Function `u` and updates its ghosts.
-void to_function(Vec x, dolfinx::fem::Function<double>& u);
-std::vector<double> owned_values(Vec x);
-void set_owned_values(Vec x, const std::vector<double>& v);
-
 /// A coordinate [m] rounded to the micrometre (no round-off noise such as
 /// -2.9e-17 or 103.00000000000001 in summaries), and a time [s] to the
 /// nanosecond.
 double coordinate(double x);
 double instant(double t);
-
-/// The array `name` of a checkpoint with `size` values (0: any size);
-/// std::runtime_error otherwise.
-const std::vector<double>& checkpoint_array(const CheckpointData& data,
-                                            const std::string& name,
-                                            std::size_t size = 0);
-/// Runs `restore` (reading a checkpoint into the run) on every rank; a
-/// failure on any rank (a missing or mis-sized array) becomes
-/// input::InputError on all of them. Collective.
-void restore_collectively(MPI_Comm comm, const std::filesystem::path& dir,
-                          const std::function<void()>& restore);
 
 /// {"value" [MPa], "x", "y"(, "z"), "t"} of an extreme stress.
 nlohmann::json extreme_json(const results::Extreme& e, int dim);
@@ -50,72 +29,6 @@ std::vector<std::int32_t> region_cells(const geometry::Model& m, int region);
 
 /// Wall seconds since t0.
 double seconds_since(std::chrono::steady_clock::time_point t0);
-
-/// The ground-acceleration load of the relative formulation,
-/// f(t_k) = base - M sum_c r_c a_gc(t_k), for the active components of the
-/// settings; with `tie` the influence vectors are restricted to the tied
-/// unknowns (M is then the reduced mass).
-class GroundMotionLoad
-{
-public:
-  GroundMotionLoad(const fem::ElasticModel& fe, const SeismicSettings& s, Mat M,
-                   Mat tie = nullptr);
-  /// f = base (or 0 if base is null) + the ground-motion load at step k.
-  void assemble(int k, Vec base, Vec f) const;
-  /// The acceleration at rest under the ground motion at t = 0,
-  /// a = -sum_c r_c a_gc(0): it satisfies M a = f(0) also where M is
-  /// singular (massless foundation, fixed dofs).
-  void initial_acceleration(Vec a) const;
-
-private:
-  const SeismicSettings& _s;
-  std::vector<int> _active;
-  std::vector<dolfinx::la::petsc::Vector> _influence, _load;
-};
-
-/// SIGINT/SIGTERM request a stop while an instance lives (the previous
-/// handlers come back on destruction).
-class StopSignals
-{
-public:
-  StopSignals();
-  ~StopSignals();
-  /// True on every rank if any rank got a signal or `forced`; collective.
-  bool requested(MPI_Comm comm, bool forced) const;
-  /// After step k of n: calls checkpoint(k) every s.checkpoint_every steps
-  /// (not at the last) and on a stop request (a signal or
-  /// s.stop_at_step), then throws Interrupted on a stop. Collective.
-  void checkpoint_or_stop(MPI_Comm comm, const SeismicSettings& s, int k, int n,
-                          const std::function<void(int)>& checkpoint,
-                          const std::filesystem::path& ckpt_dir) const;
-
-private:
-  void (*_old_int)(int);
-  void (*_old_term)(int);
-};
-
-/// Modal analysis (with the added mass in M, and dry if `M_dry`) and the
-/// Rayleigh damping of the settings; prints the frequencies (rank 0).
-/// `with_K_factors`: see linalg::solve_modes (its time is reported in
-/// `with_K_factors_seconds`, not in `seconds`).
-struct ModalResult
-{
-  linalg::Modes modes;
-  std::vector<double> dry_hz;
-  double f1 = 0.0, f2 = 0.0;
-  dynamics::RayleighDamping damping;
-  double seconds = 0.0;
-  double with_K_factors_seconds = 0.0;
-};
-ModalResult
-modal_and_damping(Mat K, Mat M, Mat M_dry, const SeismicSettings& s,
-                  const std::function<void(KSP)>& with_K_factors = {});
-/// Writes the mode shapes (P1 vertex displacement, mass-normalised) as one
-/// XDMF grid, a vector field per mode named with its number and frequency
-/// (mode_01_2.241_Hz).
-void write_modes(fem::ElasticModel& fe, const linalg::Modes& modes,
-                 const std::function<Vec(Vec)>& full,
-                 const std::filesystem::path& file);
 
 /// Prints the model line of a run: "damseis: N cells, M dofs, Pk, R rank(s)"
 /// followed by `suffix`.
