@@ -58,14 +58,8 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   Matrix M(fe.assemble_mass(added), false);
   if (tie)
   {
-    for (Matrix* A : {&K, &M})
-    {
-      Mat aij, reduced;
-      MatConvert(A->mat(), MATAIJ, MAT_INITIAL_MATRIX, &aij);
-      MatPtAP(aij, tie, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &reduced);
-      MatDestroy(&aij);
-      *A = Matrix(reduced, false);
-    }
+    K = Matrix(fem::reduce_to_tied(K.mat(), tie), false);
+    M = Matrix(fem::reduce_to_tied(M.mat(), tie), false);
   }
   // Full-space vector of a system vector, and system load of a full one.
   Vector u_full = tie ? linalg::row_vector(tie) : Vector(nullptr, false);
@@ -114,13 +108,7 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   {
     M0 = Matrix(fe.assemble_mass(nullptr), false);
     if (tie)
-    {
-      Mat aij, reduced;
-      MatConvert(M0.mat(), MATAIJ, MAT_INITIAL_MATRIX, &aij);
-      MatPtAP(aij, tie, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &reduced);
-      MatDestroy(&aij);
-      M0 = Matrix(reduced, false);
-    }
+      M0 = Matrix(fem::reduce_to_tied(M0.mat(), tie), false);
   }
   const ModalResult modal = modal_and_damping(
       K.mat(), M.mat(), added ? M0.mat() : nullptr, s,

@@ -196,6 +196,17 @@ Mat tie_prolongation(const dolfinx::fem::FunctionSpace& V,
   return P;
 }
 
+Mat reduce_to_tied(Mat A, Mat P)
+{
+  // PETSc's PtAP takes AIJ, not the blocked storage of the assembled
+  // operators.
+  Mat aij, reduced;
+  MatConvert(A, MATAIJ, MAT_INITIAL_MATRIX, &aij);
+  MatPtAP(aij, P, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &reduced);
+  MatDestroy(&aij);
+  return reduced;
+}
+
 Vec restrict_to_tied(Mat P, Vec x)
 {
   Vec xr, ones, counts;

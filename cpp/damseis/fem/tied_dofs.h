@@ -22,6 +22,10 @@ Mat tie_prolongation(const dolfinx::fem::FunctionSpace& V,
                      const std::vector<std::pair<int, int>>& tag_pairs,
                      double tol = 1e-8);
 
+/// The operator on the tied unknowns, P^T A P (AIJ; any storage of A).
+/// The caller owns the result.
+Mat reduce_to_tied(Mat A, Mat P);
+
 /// The restriction of a vector x that P reproduces exactly (x = P x_r):
 /// x_r = (P^T x) ./ (P^T 1). The caller owns the result.
 Vec restrict_to_tied(Mat P, Vec x);
