@@ -26,7 +26,8 @@ double RayleighDamping::ratio_at(double f_hz) const
 
 LinearNewmark::LinearNewmark(Mat M, Mat K, RayleighDamping damping,
                              TimeScheme scheme,
-                             linalg::Factorization factorization)
+                             linalg::Factorization factorization,
+                             const std::vector<Mat>& extra_damping)
     : _M(M), _K(K), _damping(damping), _scheme(scheme)
 {
   if (!(scheme.dt > 0.0 && std::isfinite(scheme.dt)))
@@ -44,19 +45,32 @@ LinearNewmark::LinearNewmark(Mat M, Mat K, RayleighDamping damping,
   MatDuplicate(K, MAT_COPY_VALUES, &_Keff);
   MatScale(_Keff, _cK);
   MatAXPY(_Keff, _cM, M, SUBSET_NONZERO_PATTERN);
+  // Extra damping C_e (summed once): K_eff += (1 + alpha) a1 C_e.
+  for (Mat C : extra_damping)
+  {
+    if (!_Ce)
+      MatDuplicate(C, MAT_COPY_VALUES, &_Ce);
+    else
+      MatAXPY(_Ce, 1.0, C, DIFFERENT_NONZERO_PATTERN);
+  }
+  if (_Ce)
+  {
+    _cC = (1.0 + alpha) * a1;
+    MatAXPY(_Keff, _cC, _Ce, DIFFERENT_NONZERO_PATTERN);
+  }
   MPI_Comm comm;
   PetscObjectGetComm(reinterpret_cast<PetscObject>(K), &comm);
   _solver = std::make_unique<linalg::DirectSolver>(comm, factorization);
   _solver->factorize(_Keff);
 
-  for (std::array<Vec, 3>* set : {&_x, &_Mx, &_Kx})
+  for (std::array<Vec, 3>* set : {&_x, &_Mx, &_Kx, &_Cx})
   {
     for (Vec& x : *set)
       MatCreateVecs(K, &x, nullptr);
   }
   for (Vec* x : {&_f, &_rhs, &_u_next, &_image_next})
     MatCreateVecs(K, x, nullptr);
-  for (std::array<Vec, 3>* set : {&_x, &_Mx, &_Kx})
+  for (std::array<Vec, 3>* set : {&_x, &_Mx, &_Kx, &_Cx})
   {
     for (Vec x : *set)
       VecSet(x, 0.0);
@@ -67,7 +81,7 @@ LinearNewmark::LinearNewmark(Mat M, Mat K, RayleighDamping damping,
 
 LinearNewmark::~LinearNewmark()
 {
-  for (std::array<Vec, 3>* set : {&_x, &_Mx, &_Kx})
+  for (std::array<Vec, 3>* set : {&_x, &_Mx, &_Kx, &_Cx})
   {
     for (Vec& x : *set)
       VecDestroy(&x);
@@ -75,6 +89,8 @@ LinearNewmark::~LinearNewmark()
   for (Vec* x : {&_f, &_rhs, &_u_next, &_image_next})
     VecDestroy(x);
   MatDestroy(&_Keff);
+  if (_Ce)
+    MatDestroy(&_Ce);
 }
 
 void LinearNewmark::set_state(Vec u, Vec v, Vec a, Vec f)
@@ -85,6 +101,8 @@ void LinearNewmark::set_state(Vec u, Vec v, Vec a, Vec f)
     VecCopy(in[i], _x[i]);
     MatMult(_M, _x[i], _Mx[i]);
     MatMult(_K, _x[i], _Kx[i]);
+    if (_Ce)
+      MatMult(_Ce, _x[i], _Cx[i]);
   }
   VecCopy(f, _f);
 }
@@ -146,14 +164,28 @@ void LinearNewmark::step(Vec f_next)
   Vec terms[8] = {f_next, _f, _Mx[0], _Mx[1], _Mx[2], _Kx[0], _Kx[1], _Kx[2]};
   VecSet(_rhs, 0.0);
   VecMAXPY(_rhs, 8, coef, terms);
+  if (_Ce)
+  {
+    // The extra damping's share, C_e in place of a_M M + b_K K above.
+    const PetscScalar c[3] = {w * a1, w * a4 + alpha, w * a5};
+    Vec cx[3] = {_Cx[0], _Cx[1], _Cx[2]};
+    VecMAXPY(_rhs, 3, c, cx);
+  }
 
   _solver->solve(_rhs, _u_next);
 
-  // Images of the new displacement: M u' by a product, K u' from the
-  // solved equation (exact up to the solver's residual).
+  // Images of the new displacement: M u' (and C_e u') by a product, K u'
+  // from the solved equation (exact up to the solver's residual).
   MatMult(_M, _u_next, _image_next);
   advance(_Mx, _image_next, a0, a2, a3, dt, gamma);
+  if (_Ce)
+  {
+    MatMult(_Ce, _u_next, _image_next);
+    advance(_Cx, _image_next, a0, a2, a3, dt, gamma);
+  }
   VecWAXPY(_image_next, -_cM, _Mx[0], _rhs);
+  if (_Ce)
+    VecAXPY(_image_next, -_cC, _Cx[0]);
   VecScale(_image_next, 1.0 / _cK);
   advance(_Kx, _image_next, a0, a2, a3, dt, gamma);
   advance(_x, _u_next, a0, a2, a3, dt, gamma);

@@ -1,5 +1,5 @@
 // Implicit time integration of linear structural dynamics,
-//   M a + C v + K u = f(t),   C = a_M M + b_K K (Rayleigh),
+//   M a + C v + K u = f(t),   C = a_M M + b_K K (Rayleigh) + C_e,
 // by the HHT-alpha method (alpha = 0: Newmark average acceleration). The
 // effective matrix is factorised once and reused at every step.
 #pragma once
@@ -9,6 +9,7 @@
 #include <memory>
 #include <petscmat.h>
 #include <string>
+#include <vector>
 
 namespace damseis::dynamics
 {
@@ -35,17 +36,21 @@ struct TimeScheme
 /// The integrator. State vectors have the layout of K's columns.
 ///
 /// Besides (u, v, a) it carries their images M u, M v, M a and K u, K v,
-/// K a, which obey the same Newmark recurrences. A step then costs one
-/// triangular solve and one product with M: K u_{n+1} follows from the
-/// solved equation, K_eff u_{n+1} = rhs with K_eff = c_M M + c_K K.
+/// K a (and C_e u, ... with extra damping), which obey the same Newmark
+/// recurrences. A step then costs one triangular solve and one product with
+/// M (and one with C_e): K u_{n+1} follows from the solved equation,
+/// K_eff u_{n+1} = rhs with K_eff = c_M M + c_K K + c_C C_e.
 class LinearNewmark
 {
 public:
   /// M and K must stay alive while the integrator is used. Fixed dofs are
   /// expected as identity rows of K and zero rows of M with a zero load.
+  /// `extra_damping`: damping matrices added to the Rayleigh damping (such
+  /// as boundary dashpots), with the layout of K; they must stay alive too.
   LinearNewmark(
       Mat M, Mat K, RayleighDamping damping, TimeScheme scheme,
-      linalg::Factorization factorization = linalg::Factorization::automatic);
+      linalg::Factorization factorization = linalg::Factorization::automatic,
+      const std::vector<Mat>& extra_damping = {});
   ~LinearNewmark();
   LinearNewmark(const LinearNewmark&) = delete;
   LinearNewmark& operator=(const LinearNewmark&) = delete;
@@ -64,13 +69,14 @@ public:
 
 private:
   Mat _M, _K;
+  Mat _Ce = nullptr; ///< sum of the extra damping matrices (owned), or null
   RayleighDamping _damping;
   TimeScheme _scheme;
-  double _cM = 0.0, _cK = 0.0; ///< K_eff = c_M M + c_K K
+  double _cM = 0.0, _cK = 0.0, _cC = 0.0; ///< K_eff = c_M M + c_K K + c_C C_e
   Mat _Keff = nullptr;
   std::unique_ptr<linalg::DirectSolver> _solver;
   /// (u, v, a), their M images and K images; f is the current load.
-  std::array<Vec, 3> _x{}, _Mx{}, _Kx{};
+  std::array<Vec, 3> _x{}, _Mx{}, _Kx{}, _Cx{};
   Vec _f = nullptr, _rhs = nullptr, _u_next = nullptr, _image_next = nullptr;
 };
 } // namespace damseis::dynamics
