@@ -19,6 +19,7 @@
 #include <utility>
 #include <vector>
 
+#include "gmsh_session.h"
 #include <dolfinx/common/IndexMap.h>
 #include <dolfinx/fem/CoordinateElement.h>
 #include <dolfinx/graph/AdjacencyList.h>
@@ -39,22 +40,6 @@ double seconds_since(Clock::time_point t0)
 {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
-
-/// Initialises gmsh on construction and finalises it on destruction.
-class GmshSession
-{
-public:
-  explicit GmshSession(bool verbose)
-  {
-    gmsh::initialize(0, nullptr, false);
-    gmsh::option::setNumber("General.Terminal", verbose ? 1 : 0);
-    gmsh::option::setNumber("General.Verbosity", verbose ? 5 : 0);
-    gmsh::option::setNumber("General.NumThreads", 1);
-  }
-  GmshSession(const GmshSession&) = delete;
-  GmshSession& operator=(const GmshSession&) = delete;
-  ~GmshSession() { gmsh::finalize(); }
-};
 
 /// Mesh arrays read from gmsh on rank 0 (0-based node indices, DOLFINx
 /// node order).

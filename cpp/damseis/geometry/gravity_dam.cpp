@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "gmsh_session.h"
 #include <gmsh.h>
 
 namespace damseis::geometry
@@ -81,21 +82,6 @@ void validate(const GravityDamSection& s)
                 str(s.foundation_mesh_size));
   }
 }
-
-/// Initialises gmsh on construction and finalises it on destruction.
-class GmshSession
-{
-public:
-  explicit GmshSession(bool verbose)
-  {
-    gmsh::initialize(0, nullptr, false);
-    gmsh::option::setNumber("General.Terminal", verbose ? 1 : 0);
-    gmsh::option::setNumber("General.Verbosity", verbose ? 5 : 0);
-  }
-  GmshSession(const GmshSession&) = delete;
-  GmshSession& operator=(const GmshSession&) = delete;
-  ~GmshSession() { gmsh::finalize(); }
-};
 
 /// Builds the geometry (built-in kernel, shared curves), the physical
 /// groups and the size fields, and meshes with linear triangles.

@@ -1,0 +1,189 @@
+// Models from the user's mesh files (geometry/mesh_file): a gmsh file
+// written here with named physical groups is read back on every rank
+// count with its cells, groups and tags; the area of a polygon and the
+// length of a tagged edge are exact for straight-sided triangles. Bad
+// files give one error, the same on every rank.
+#include <cmath>
+#include <damseis/geometry/mesh_file.h>
+#include <dolfinx/common/IndexMap.h>
+#include <dolfinx/mesh/utils.h>
+#include <filesystem>
+#include <fstream>
+#include <gmsh.h>
+#include <gtest/gtest.h>
+#include <mpi.h>
+
+using namespace damseis::geometry;
+
+namespace
+{
+double sum(double x)
+{
+  MPI_Allreduce(MPI_IN_PLACE, &x, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  return x;
+}
+
+/// A temporary folder every rank agrees on (made by rank 0).
+std::filesystem::path shared_folder(const std::string& name)
+{
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("damseis_mesh_file_" + name);
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  if (rank == 0)
+  {
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+  }
+  MPI_Barrier(MPI_COMM_WORLD);
+  return dir;
+}
+
+/// Rank 0 writes a 70 m x 100 m rectangle meshed with triangles: surface
+/// group "dam" (tag 7), curve groups "base" (y = 0, tag 3) and
+/// "upstream" (x = 0, tag 4); returns the number of triangles.
+std::int64_t write_rectangle(const std::filesystem::path& file)
+{
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  std::int64_t cells = 0;
+  if (rank == 0)
+  {
+    gmsh::initialize(0, nullptr, false);
+    gmsh::option::setNumber("General.Terminal", 0);
+    gmsh::model::add("rectangle");
+    const int s = gmsh::model::occ::addRectangle(0, 0, 0, 70, 100);
+    gmsh::model::occ::synchronize();
+    gmsh::vectorpair edges;
+    gmsh::model::getBoundary({{2, s}}, edges, false, false, false);
+    int base = -1, upstream = -1;
+    for (const auto& [dim, tag] : edges)
+    {
+      double x = 0, y = 0, z = 0;
+      gmsh::model::occ::getCenterOfMass(dim, tag, x, y, z);
+      if (std::abs(y) < 1e-9)
+        base = tag;
+      if (std::abs(x) < 1e-9)
+        upstream = tag;
+    }
+    gmsh::model::addPhysicalGroup(2, {s}, 7);
+    gmsh::model::setPhysicalName(2, 7, "dam");
+    gmsh::model::addPhysicalGroup(1, {base}, 3);
+    gmsh::model::setPhysicalName(1, 3, "base");
+    gmsh::model::addPhysicalGroup(1, {upstream}, 4);
+    gmsh::model::setPhysicalName(1, 4, "upstream");
+    gmsh::option::setNumber("Mesh.MeshSizeMax", 10.0);
+    gmsh::model::mesh::generate(2);
+    std::vector<int> types;
+    std::vector<std::vector<std::size_t>> tags, nodes;
+    gmsh::model::mesh::getElements(types, tags, nodes, 2, -1);
+    for (const auto& t : tags)
+      cells += static_cast<std::int64_t>(t.size());
+    gmsh::write(file.string());
+    gmsh::finalize();
+  }
+  MPI_Bcast(&cells, 1, MPI_INT64_T, 0, MPI_COMM_WORLD);
+  return cells;
+}
+
+/// Error message of read_mesh_file on `file` ("" if it reads).
+std::string read_error(const std::filesystem::path& file)
+{
+  try
+  {
+    read_mesh_file(MPI_COMM_WORLD, file);
+  }
+  catch (const std::runtime_error& e)
+  {
+    return e.what();
+  }
+  return "";
+}
+} // namespace
+
+TEST(MeshFile, RectangleReadsBackWithItsGroups)
+{
+  const auto dir = shared_folder("rectangle");
+  const auto file = dir / "rectangle.msh";
+  const std::int64_t cells = write_rectangle(file);
+  const MeshFile m = read_mesh_file(MPI_COMM_WORLD, file);
+  EXPECT_EQ(m.tdim, 2);
+  ASSERT_EQ(m.groups.size(), 3u);
+  EXPECT_EQ(m.groups.at("dam").dim, 2);
+  EXPECT_EQ(m.groups.at("dam").tag, 7);
+  EXPECT_EQ(m.groups.at("base").tag, 3);
+  EXPECT_EQ(m.groups.at("upstream").dim, 1);
+  const auto cell_map = m.model.mesh->topology().index_map(2);
+  EXPECT_EQ(cell_map->size_global(), cells);
+
+  // Area of the owned cells (every one tagged 7): 7000 m2 exactly.
+  const auto& dofs = m.model.mesh->geometry().dofmap();
+  auto x = m.model.mesh->geometry().x();
+  double area = 0;
+  for (std::int32_t c = 0; c < cell_map->size_local(); ++c)
+  {
+    auto d = dofs.links(c);
+    const double* p = &x[3 * d[0]];
+    const double* q = &x[3 * d[1]];
+    const double* r = &x[3 * d[2]];
+    area += 0.5 * std::abs((q[0] - p[0]) * (r[1] - p[1]) -
+                           (q[1] - p[1]) * (r[0] - p[0]));
+  }
+  EXPECT_NEAR(sum(area), 7000.0, 1e-9 * 7000.0);
+  std::int64_t tagged = 0;
+  for (std::int32_t v : m.model.cell_tags->values())
+    tagged += v == 7;
+  EXPECT_GE(tagged, cell_map->size_local());
+
+  // Lengths of the tagged edges: base 70 m, upstream 100 m (owned facets).
+  const auto facet_map = m.model.mesh->topology().index_map(1);
+  for (const auto& [tag, length] : {std::pair{3, 70.0}, std::pair{4, 100.0}})
+  {
+    std::vector<std::int32_t> facets;
+    const auto& idx = m.model.facet_tags->indices();
+    const auto& val = m.model.facet_tags->values();
+    for (std::size_t i = 0; i < idx.size(); ++i)
+      if (val[i] == tag && idx[i] < facet_map->size_local())
+        facets.push_back(idx[i]);
+    const auto g =
+        dolfinx::mesh::entities_to_geometry(*m.model.mesh, 1, facets, false);
+    double l = 0;
+    for (std::size_t i = 0; i < facets.size(); ++i)
+    {
+      const double* p = &x[3 * g[2 * i]];
+      const double* q = &x[3 * g[2 * i + 1]];
+      l += std::hypot(q[0] - p[0], q[1] - p[1]);
+    }
+    EXPECT_NEAR(sum(l), length, 1e-9 * length) << "tag " << tag;
+  }
+}
+
+TEST(MeshFile, BadFilesGiveOneErrorOnEveryRank)
+{
+  const auto dir = shared_folder("bad");
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  if (rank == 0)
+  {
+    std::ofstream(dir / "garbage.msh") << "$MeshFormat\nnot a mesh\n";
+    // A mesh with only a curve group: no cells.
+    gmsh::initialize(0, nullptr, false);
+    gmsh::option::setNumber("General.Terminal", 0);
+    const int l =
+        gmsh::model::occ::addLine(gmsh::model::occ::addPoint(0, 0, 0),
+                                  gmsh::model::occ::addPoint(1, 0, 0));
+    gmsh::model::occ::synchronize();
+    gmsh::model::addPhysicalGroup(1, {l}, 1);
+    gmsh::model::mesh::generate(1);
+    gmsh::write((dir / "line.msh").string());
+    gmsh::finalize();
+  }
+  MPI_Barrier(MPI_COMM_WORLD);
+  EXPECT_NE(read_error(dir / "missing.msh").find("no such mesh file"),
+            std::string::npos);
+  EXPECT_NE(read_error(dir / "garbage.msh").find("gmsh cannot read it"),
+            std::string::npos)
+      << read_error(dir / "garbage.msh");
+  EXPECT_NE(read_error(dir / "line.msh").find("no physical group of dimension"),
+            std::string::npos);
+}
