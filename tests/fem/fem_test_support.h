@@ -8,6 +8,7 @@
 #include <damseis/geometry/gmsh_mesh.h>
 #include <damseis/geometry/tags.h>
 #include <damseis/linalg/direct_solver.h>
+#include <damseis/linalg/petsc_vectors.h>
 
 #include <algorithm>
 #include <array>
@@ -313,14 +314,5 @@ inline void solve(Mat K, Vec b, dolfinx::fem::Function<double>& u)
 }
 
 /// Owned entries of a (ghosted or not) Vec, copied.
-inline std::vector<double> owned_values(Vec v)
-{
-  PetscInt n = 0;
-  VecGetLocalSize(v, &n);
-  const PetscScalar* a = nullptr;
-  VecGetArrayRead(v, &a);
-  std::vector<double> out(a, a + n);
-  VecRestoreArrayRead(v, &a);
-  return out;
-}
+using damseis::linalg::owned_values;
 } // namespace damseis::test
