@@ -4,7 +4,11 @@
 // length of a tagged edge are exact for straight-sided triangles. Bad
 // files give one error, the same on every rank.
 #include <cmath>
+#include <damseis/fem/elastic_model.h>
+#include <damseis/geometry/gravity_dam.h>
 #include <damseis/geometry/mesh_file.h>
+#include <damseis/geometry/tags.h>
+#include <damseis/linalg/modal.h>
 #include <dolfinx/common/IndexMap.h>
 #include <dolfinx/mesh/utils.h>
 #include <filesystem>
@@ -14,6 +18,7 @@
 #include <mpi.h>
 
 using namespace damseis::geometry;
+using damseis::geometry::GravityDamSection;
 
 namespace
 {
@@ -186,4 +191,57 @@ TEST(MeshFile, BadFilesGiveOneErrorOnEveryRank)
       << read_error(dir / "garbage.msh");
   EXPECT_NE(read_error(dir / "line.msh").find("no physical group of dimension"),
             std::string::npos);
+}
+
+namespace
+{
+/// The three lowest frequencies [Hz] of a gravity-dam model (P2, dam
+/// fixed at its base, the foundation massless).
+std::vector<double> frequencies(const Model& m)
+{
+  using damseis::fem::ElasticModel;
+  using damseis::fem::Material;
+  namespace tags = damseis::tags;
+  ElasticModel fe(m, 2,
+                  std::map<int, Material>{{tags::dam, {31.03e9, 0.2, 2643}},
+                                          {tags::foundation, {31e9, 0.2, 0}}});
+  fe.fix({tags::foundation_bottom, tags::foundation_sides});
+  Mat K = fe.assemble_stiffness(), M = fe.assemble_mass(nullptr);
+  const auto modes = damseis::linalg::solve_modes(K, M, 3);
+  MatDestroy(&K);
+  MatDestroy(&M);
+  return modes.frequencies_hz;
+}
+} // namespace
+
+// The Koyna section with its foundation, written by the builder
+// (build_gravity_dam's mesh_file) and read back: the same groups by name
+// and tag, the same cells, and the same three lowest frequencies (the
+// same matrices up to the numbering of the nodes: 1e-9 relative).
+TEST(MeshFile, KoynaSectionExportReadsBackTheSameModel)
+{
+  namespace tags = damseis::tags;
+  const auto dir = shared_folder("koyna");
+  const auto file = dir / "koyna.msh";
+  GravityDamSection s;
+  s.mesh_size = 8.0;
+  s.foundation = true;
+  s.foundation_width = 300.0; // the koyna case's foundation block
+  s.foundation_depth = 100.0;
+  const Model built = build_gravity_dam(MPI_COMM_WORLD, s, false, file);
+  const MeshFile read = read_mesh_file(MPI_COMM_WORLD, file);
+  EXPECT_EQ(read.tdim, 2);
+  EXPECT_EQ(read.groups.at("dam").tag, int(tags::dam));
+  EXPECT_EQ(read.groups.at("foundation").tag, int(tags::foundation));
+  EXPECT_EQ(read.groups.at("dam_base").tag, int(tags::dam_base));
+  EXPECT_EQ(read.groups.at("upstream_face").dim, 1);
+  EXPECT_EQ(read.groups.at("foundation_sides").tag,
+            int(tags::foundation_sides));
+  EXPECT_EQ(read.model.mesh->topology().index_map(2)->size_global(),
+            built.mesh->topology().index_map(2)->size_global());
+  const auto f_built = frequencies(built), f_read = frequencies(read.model);
+  ASSERT_EQ(f_built.size(), 3u);
+  ASSERT_EQ(f_read.size(), 3u);
+  for (int i = 0; i < 3; ++i)
+    EXPECT_NEAR(f_read[i], f_built[i], 1e-9 * f_built[i]) << "mode " << i + 1;
 }

@@ -31,7 +31,12 @@ nlohmann::json run_one(MPI_Comm comm, const GravityDamConfig& cfg,
   if (foundation)
     materials[tags::foundation] = cfg.rock;
   results::set_stage("meshing");
-  fem::ElasticModel fe(geometry::build_gravity_dam(comm, cfg.section),
+  if (cfg.write_mesh_file)
+    std::filesystem::create_directories(out_dir); // rank 0 writes the mesh
+  fem::ElasticModel fe(geometry::build_gravity_dam(
+                           comm, cfg.section, false,
+                           cfg.write_mesh_file ? out_dir / "model.msh"
+                                               : std::filesystem::path()),
                        cfg.order, materials, cfg.plane);
   if (foundation)
     fe.fix({tags::foundation_bottom, tags::foundation_sides});

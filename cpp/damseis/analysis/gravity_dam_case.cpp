@@ -54,6 +54,9 @@ input::Schema gravity_dam_schema()
       .between(100, 20000);
   s.string("material.plane", "plane_stress", "-", "2D idealisation",
            {"plane_stress", "plane_strain"});
+  s.boolean("output.mesh_file", "false", "-",
+            "also write the model as model.msh (gmsh, physical groups named "
+            "dam, foundation, upstream_face, dam_base, ...)");
   s.boolean("foundation.enabled", "false", "-",
             "massless foundation block (else a rigid base)");
   s.real("foundation.width", "300.0", "m",
@@ -139,6 +142,7 @@ GravityDamConfig read_gravity_dam_config(const input::Case& c)
   g.plane = c.string("material.plane") == "plane_strain"
                 ? fem::PlaneMode::plane_strain
                 : fem::PlaneMode::plane_stress;
+  g.write_mesh_file = c.boolean("output.mesh_file");
   s.foundation = c.boolean("foundation.enabled");
   s.foundation_width = c.real("foundation.width");
   s.foundation_depth = c.real("foundation.depth");

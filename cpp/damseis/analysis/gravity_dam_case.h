@@ -31,6 +31,8 @@ struct GravityDamConfig
   fem::Silt silt;
   bool uplift_on = false;
   fem::Uplift uplift;
+  /// Write the gmsh mesh as model.msh in the output folder.
+  bool write_mesh_file = false;
 };
 
 /// Ground-motion directions of a 2D section: x horizontal, y vertical.

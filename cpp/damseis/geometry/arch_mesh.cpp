@@ -349,9 +349,15 @@ MeshArrays build_on_root(const ArchDamGeometry& g, bool verbose)
     groups[tag].push_back(s);
   }
   gmsh::model::addPhysicalGroup(3, dam_vols, tags::dam);
+  gmsh::model::setPhysicalName(3, tags::dam, tags::region_name(tags::dam));
   gmsh::model::addPhysicalGroup(3, rock_vols, tags::foundation);
+  gmsh::model::setPhysicalName(3, tags::foundation,
+                               tags::region_name(tags::foundation));
   for (const auto& [tag, s] : groups)
+  {
     gmsh::model::addPhysicalGroup(2, s, tag);
+    gmsh::model::setPhysicalName(2, tag, tags::boundary_name(tag));
+  }
 
   // Mesh size: h at the dam, grading to size_far over grading_distance
   const double h = mo.size;

@@ -141,20 +141,25 @@ void build_and_mesh(const GravityDamSection& s)
   }
   geo::synchronize();
 
-  // Physical groups (tags.h)
-  gmsh::model::addPhysicalGroup(2, {dam}, tags::dam);
-  gmsh::model::addPhysicalGroup(1, upstream, tags::upstream_face);
-  gmsh::model::addPhysicalGroup(1, {down1, down2}, tags::downstream_face);
-  gmsh::model::addPhysicalGroup(1, {crest}, tags::crest);
-  gmsh::model::addPhysicalGroup(1, {base}, tags::dam_base);
+  // Physical groups (tags.h), named as tags.h names them
+  auto group = [](int dim, const std::vector<int>& entities, int tag)
+  {
+    gmsh::model::addPhysicalGroup(dim, entities, tag);
+    gmsh::model::setPhysicalName(
+        dim, tag, dim == 2 ? tags::region_name(tag) : tags::boundary_name(tag));
+  };
+  group(2, {dam}, tags::dam);
+  group(1, upstream, tags::upstream_face);
+  group(1, {down1, down2}, tags::downstream_face);
+  group(1, {crest}, tags::crest);
+  group(1, {base}, tags::dam_base);
   if (s.foundation)
   {
-    gmsh::model::addPhysicalGroup(2, {foundation}, tags::foundation);
-    gmsh::model::addPhysicalGroup(1, {bottom}, tags::foundation_bottom);
-    gmsh::model::addPhysicalGroup(1, {left, right}, tags::foundation_sides);
-    gmsh::model::addPhysicalGroup(1, {floor}, tags::reservoir_floor);
-    gmsh::model::addPhysicalGroup(1, {top_down},
-                                  tags::foundation_top_downstream);
+    group(2, {foundation}, tags::foundation);
+    group(1, {bottom}, tags::foundation_bottom);
+    group(1, {left, right}, tags::foundation_sides);
+    group(1, {floor}, tags::reservoir_floor);
+    group(1, {top_down}, tags::foundation_top_downstream);
   }
 
   gmsh::option::setNumber("Mesh.Algorithm", 6);
@@ -267,7 +272,8 @@ double section_area(const GravityDamSection& s)
   return 0.5 * twice;
 }
 //-----------------------------------------------------------------------------
-Model build_gravity_dam(MPI_Comm comm, const GravityDamSection& s, bool verbose)
+Model build_gravity_dam(MPI_Comm comm, const GravityDamSection& s, bool verbose,
+                        const std::filesystem::path& mesh_file)
 {
   // Deterministic, so every rank throws the same error
   validate(s);
@@ -283,6 +289,8 @@ Model build_gravity_dam(MPI_Comm comm, const GravityDamSection& s, bool verbose)
     {
       session.emplace(verbose);
       build_and_mesh(s);
+      if (!mesh_file.empty())
+        gmsh::write(mesh_file.string());
     }
     catch (const std::exception& e)
     {

@@ -2,6 +2,8 @@
 // meshed with gmsh and distributed as a DOLFINx mesh.
 #pragma once
 
+#include <filesystem>
+
 #include "gmsh_mesh.h"
 
 #include <array>
@@ -56,12 +58,16 @@ struct GravityDamSection
 /// @param[in] comm Communicator over which the mesh is distributed.
 /// @param[in] s The section.
 /// @param[in] verbose If true, gmsh writes its terminal output.
+/// @param[in] mesh_file If not empty, rank 0 also writes the gmsh mesh
+/// there (.msh; its physical groups named as in tags.h), for
+/// geometry::read_mesh_file and the user's own studies.
 /// @return The mesh with cell and facet tags.
 /// @throws std::invalid_argument for an impossible section (non-positive
 /// or non-finite sizes, crest below the neck, foundation narrower than
 /// the base, ...), on all ranks.
 Model build_gravity_dam(MPI_Comm comm, const GravityDamSection& s,
-                        bool verbose = false);
+                        bool verbose = false,
+                        const std::filesystem::path& mesh_file = {});
 
 /// The dam section polygon counterclockwise from the heel: heel, toe, neck,
 /// downstream crest corner, upstream crest corner (x, y, 0).

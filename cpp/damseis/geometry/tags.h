@@ -2,6 +2,8 @@
 // and the solvers. Keep in sync with the comments in forms/elasticity_*.py.
 #pragma once
 
+#include <string>
+
 namespace damseis::tags
 {
 /// Cell (region) tags.
@@ -60,5 +62,59 @@ constexpr int joint_side2(int k)
 constexpr bool is_joint_tag(int tag)
 {
   return tag >= joint_base and tag < joint_base + 2 * 26;
+}
+
+/// The name of a region tag ("dam", "foundation"), as the builders name
+/// their physical groups in gmsh (and so in exported mesh files).
+inline std::string region_name(int tag)
+{
+  switch (tag)
+  {
+  case dam:
+    return "dam";
+  case foundation:
+    return "foundation";
+  default:
+    return "region_" + std::to_string(tag);
+  }
+}
+
+/// The name of a boundary tag: the enumerator's name, "joint_A_side1" ...
+/// for joints.
+inline std::string boundary_name(int tag)
+{
+  if (is_joint_tag(tag))
+    return std::string("joint_") +
+           static_cast<char>('A' + (tag - joint_base) / 2) + "_side" +
+           std::to_string((tag - joint_base) % 2 + 1);
+  switch (tag)
+  {
+  case upstream_face:
+    return "upstream_face";
+  case downstream_face:
+    return "downstream_face";
+  case crest:
+    return "crest";
+  case dam_base:
+    return "dam_base";
+  case foundation_bottom:
+    return "foundation_bottom";
+  case foundation_sides:
+    return "foundation_sides";
+  case reservoir_floor:
+    return "reservoir_floor";
+  case foundation_top_downstream:
+    return "foundation_top_downstream";
+  case foundation_top:
+    return "foundation_top";
+  case foundation_upstream:
+    return "foundation_upstream";
+  case foundation_downstream:
+    return "foundation_downstream";
+  case upstream_wetted:
+    return "upstream_wetted";
+  default:
+    return "boundary_" + std::to_string(tag);
+  }
 }
 } // namespace damseis::tags

@@ -51,8 +51,9 @@ bool output_like(const fs::path& rel)
   }
   if (depth > max_depth)
     return false;
-  static const std::set<std::string> ext = {
-      ".csv", ".json", ".xdmf", ".h5", ".png", ".md", ".toml", ".bin", ".tmp"};
+  static const std::set<std::string> ext = {".csv", ".json", ".xdmf", ".h5",
+                                            ".png", ".md",   ".toml", ".bin",
+                                            ".tmp", ".msh"};
   return ext.count(rel.extension().string()) > 0;
 }
 
