@@ -1,17 +1,12 @@
 #include "arch_dam_analysis.h"
-#include "checkpoint.h"
-#include "ground_motion_load.h"
 #include "linear_seismic.h"
-#include "modal_stage.h"
 #include "run_outputs.h"
-#include "stop_signals.h"
 #include <cstdio>
 #include <cstdlib>
 #include <damseis/fem/tied_dofs.h>
 #include <damseis/geometry/arch_mesh.h>
 #include <damseis/geometry/mesh_estimate.h>
 #include <damseis/geometry/tags.h>
-#include <damseis/linalg/petsc_vectors.h>
 #include <damseis/results/progress.h>
 #include <damseis/results/singular_points.h>
 #include <dolfinx/la/petsc.h>

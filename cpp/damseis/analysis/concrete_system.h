@@ -4,11 +4,6 @@
 // state.
 #pragma once
 
-#include "checkpoint.h"
-#include "ground_motion_load.h"
-#include "modal_stage.h"
-#include "run_outputs.h"
-#include "stop_signals.h"
 #include <damseis/dynamics/nonlinear_newmark.h>
 #include <damseis/fem/concrete_model.h>
 #include <damseis/linalg/petsc_vectors.h>

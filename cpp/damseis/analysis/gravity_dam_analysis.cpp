@@ -1,14 +1,9 @@
 #include "gravity_dam_analysis.h"
-#include "checkpoint.h"
-#include "ground_motion_load.h"
 #include "linear_seismic.h"
-#include "modal_stage.h"
 #include "nonlinear_seismic.h"
 #include "run_outputs.h"
-#include "stop_signals.h"
 #include <damseis/geometry/mesh_estimate.h>
 #include <damseis/geometry/tags.h>
-#include <damseis/linalg/petsc_vectors.h>
 #include <damseis/results/progress.h>
 #include <dolfinx/la/petsc.h>
 #include <fstream>
