@@ -555,20 +555,20 @@ std::string Key::constraint_text() const
 
 KeyBuilder& KeyBuilder::bound(bool lower_bound, double x, bool exclusive)
 {
-  if (key_->type == Type::boolean || key_->type == Type::string)
-    throw_logic("bounds set on " + type_name(key_->type) + " key " +
-                key_->path);
+  if (_key->type == Type::boolean || _key->type == Type::string)
+    throw_logic("bounds set on " + type_name(_key->type) + " key " +
+                _key->path);
   if (!std::isfinite(x))
-    throw_logic("non-finite bound set on key " + key_->path);
+    throw_logic("non-finite bound set on key " + _key->path);
   if (lower_bound)
   {
-    key_->min = x;
-    key_->min_exclusive = exclusive;
+    _key->min = x;
+    _key->min_exclusive = exclusive;
   }
   else
   {
-    key_->max = x;
-    key_->max_exclusive = exclusive;
+    _key->max = x;
+    _key->max_exclusive = exclusive;
   }
   return *this;
 }
@@ -622,7 +622,7 @@ KeyBuilder Schema::add(const std::string& path, Type type,
       break;
     start = dot + 1;
   }
-  for (const Key& key : keys_)
+  for (const Key& key : _keys)
   {
     if (key.path == path)
       throw_logic("key " + path + " declared twice");
@@ -637,8 +637,8 @@ KeyBuilder Schema::add(const std::string& path, Type type,
   key.unit = unit;
   key.help = help;
   default_of(key); // throws std::logic_error if the default does not parse
-  keys_.push_back(std::move(key));
-  return KeyBuilder(keys_.back());
+  _keys.push_back(std::move(key));
+  return KeyBuilder(_keys.back());
 }
 
 KeyBuilder Schema::real(const std::string& path,
@@ -689,7 +689,7 @@ KeyBuilder Schema::integer_array(const std::string& path,
 
 const Key* Schema::find(const std::string& path) const
 {
-  for (const Key& key : keys_)
+  for (const Key& key : _keys)
     if (key.path == path)
       return &key;
   return nullptr;
@@ -697,7 +697,7 @@ const Key* Schema::find(const std::string& path) const
 
 void Schema::set_default(const std::string& path, const std::string& value)
 {
-  for (Key& key : keys_)
+  for (Key& key : _keys)
   {
     if (key.path == path)
     {
@@ -710,7 +710,7 @@ void Schema::set_default(const std::string& path, const std::string& value)
 
 void Schema::validate() const
 {
-  for (const Key& key : keys_)
+  for (const Key& key : _keys)
   {
     const bool numeric = key.type != Type::boolean && key.type != Type::string;
     if (!numeric && (key.min || key.max))
@@ -735,7 +735,7 @@ std::string Schema::help_text() const
     std::string key, type, value, unit, help;
   };
   std::vector<std::string> tables;
-  for (const Key& key : keys_)
+  for (const Key& key : _keys)
     if (std::find(tables.begin(), tables.end(), table_of(key.path)) ==
         tables.end())
       tables.push_back(table_of(key.path));
@@ -744,7 +744,7 @@ std::string Schema::help_text() const
 
   std::vector<Row> rows;
   rows.push_back({"KEY", "TYPE", "DEFAULT", "UNIT", "DESCRIPTION"});
-  for (const Key& key : keys_)
+  for (const Key& key : _keys)
   {
     std::string value;
     try
@@ -786,8 +786,8 @@ std::string Schema::help_text() const
   for (const std::string& table : tables)
   {
     text += table.empty() ? "(top level)\n" : "[" + table + "]\n";
-    for (std::size_t i = 0; i < keys_.size(); ++i)
-      if (table_of(keys_[i].path) == table)
+    for (std::size_t i = 0; i < _keys.size(); ++i)
+      if (table_of(_keys[i].path) == table)
         text += line(rows[i + 1]);
   }
   return text;
@@ -1008,30 +1008,30 @@ Case Case::load(const Schema& schema, const std::filesystem::path& file,
 
   // Final values: bounds and choices.
   Case result;
-  result.file_ = file;
-  result.overrides_ = overrides;
-  result.keys_ = schema.keys();
-  result.keys_in_file_ = keys_in_file;
+  result._file = file;
+  result._overrides = overrides;
+  result._keys = schema.keys();
+  result._keys_in_file = keys_in_file;
   for (const Key& key : schema.keys())
   {
     const auto it = given.find(key.path);
     if (it == given.end())
     {
-      result.values_[key.path] = {default_of(key), false};
+      result._values[key.path] = {default_of(key), false};
       continue;
     }
     const std::string problem = check(key, it->second.value);
     if (!problem.empty())
       throw_input(where + it->second.subject + " " + problem);
-    result.values_[key.path] = {std::move(it->second.value), true};
+    result._values[key.path] = {std::move(it->second.value), true};
   }
   return result;
 }
 
 const Case::Entry& Case::entry(const std::string& key, Type type) const
 {
-  const auto it = values_.find(key);
-  if (it == values_.end())
+  const auto it = _values.find(key);
+  if (it == _values.end())
     throw_logic("Case: key " + key + " is not in the schema");
   const auto actual = static_cast<Type>(it->second.value.index());
   if (actual != type)
@@ -1076,13 +1076,13 @@ std::filesystem::path Case::path(const std::string& key) const
   const std::filesystem::path p(string(key));
   if (p.empty() || p.is_absolute())
     return p;
-  return (file_.parent_path() / p).lexically_normal();
+  return (_file.parent_path() / p).lexically_normal();
 }
 
 bool Case::is_set(const std::string& key) const
 {
-  const auto it = values_.find(key);
-  if (it == values_.end())
+  const auto it = _values.find(key);
+  if (it == _values.end())
     throw_logic("Case: key " + key + " is not in the schema");
   return it->second.set;
 }
@@ -1090,14 +1090,14 @@ bool Case::is_set(const std::string& key) const
 void Case::fail(const std::string& key, const std::string& problem,
                 const std::string& expected) const
 {
-  throw_input(file_.string() + ": " + key + ": " + problem + "; expected " +
+  throw_input(_file.string() + ": " + key + ": " + problem + "; expected " +
               expected);
 }
 
 std::string Case::to_toml() const
 {
   std::vector<std::string> tables;
-  for (const Key& key : keys_)
+  for (const Key& key : _keys)
     if (std::find(tables.begin(), tables.end(), table_of(key.path)) ==
         tables.end())
       tables.push_back(table_of(key.path));
@@ -1107,18 +1107,18 @@ std::string Case::to_toml() const
 
   std::string text = "# Effective damseis case: every key with its final "
                      "value (file, --set or default).\n# Read from " +
-                     one_line(file_.string()) +
+                     one_line(_file.string()) +
                      "; relative paths in it are relative to that file.\n";
-  for (const std::string& override_text : overrides_)
+  for (const std::string& override_text : _overrides)
     text += "# --set " + one_line(override_text) + "\n";
   for (const std::string& table : tables)
   {
     text += table.empty() ? "\n" : "\n[" + table + "]\n";
-    for (const Key& key : keys_)
+    for (const Key& key : _keys)
     {
       if (table_of(key.path) != table)
         continue;
-      const Entry& e = values_.at(key.path);
+      const Entry& e = _values.at(key.path);
       text += leaf(key.path) + " = " + value_text(e.value) + "  # [" +
               (key.unit.empty() ? "-" : key.unit) + "] " + one_line(key.help) +
               (e.set ? "" : " (default)") + "\n";

@@ -105,7 +105,7 @@ struct Key
 class KeyBuilder
 {
 public:
-  explicit KeyBuilder(Key& key) : key_(&key) {}
+  explicit KeyBuilder(Key& key) : _key(&key) {}
   /// value > x
   KeyBuilder& above(double x);
   /// value < x
@@ -119,11 +119,11 @@ public:
   /// a < value < b
   KeyBuilder& between_exclusive(double a, double b);
   /// The key being built.
-  Key& key() const { return *key_; }
+  Key& key() const { return *_key; }
 
 private:
   KeyBuilder& bound(bool lower, double x, bool exclusive);
-  Key* key_;
+  Key* _key;
 };
 
 /// The keys a program understands, in declaration order.
@@ -158,7 +158,7 @@ public:
                            const std::string& unit, const std::string& help);
 
   /// All keys, in declaration order.
-  const std::vector<Key>& keys() const { return keys_; }
+  const std::vector<Key>& keys() const { return _keys; }
   /// The key with this dotted path, or nullptr.
   const Key* find(const std::string& path) const;
   /// Changes the default of an existing key (a demo's own default for a
@@ -175,7 +175,7 @@ private:
   KeyBuilder add(const std::string& path, Type type,
                  const std::string& default_value, const std::string& unit,
                  const std::string& help);
-  std::vector<Key> keys_;
+  std::vector<Key> _keys;
 };
 
 /// A loaded and validated case: every key of the schema with its final value
@@ -214,10 +214,10 @@ public:
 
   /// Number of keys the case file itself gives (0: an empty file, every
   /// value a default or an override).
-  std::size_t keys_in_file() const { return keys_in_file_; }
+  std::size_t keys_in_file() const { return _keys_in_file; }
 
   /// The case file, as given to load().
-  const std::filesystem::path& file() const { return file_; }
+  const std::filesystem::path& file() const { return _file; }
 
   /// For cross-key checks done by the caller: throws InputError
   /// "<file>: <key>: <problem>; expected <expected>" (made one line).
@@ -241,11 +241,11 @@ private:
   };
   const Entry& entry(const std::string& key, Type type) const;
 
-  std::filesystem::path file_;
-  std::vector<std::string> overrides_;
-  std::size_t keys_in_file_ = 0;
-  std::vector<Key> keys_;
-  std::map<std::string, Entry> values_;
+  std::filesystem::path _file;
+  std::vector<std::string> _overrides;
+  std::size_t _keys_in_file = 0;
+  std::vector<Key> _keys;
+  std::map<std::string, Entry> _values;
 };
 
 } // namespace damseis::input

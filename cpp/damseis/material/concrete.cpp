@@ -284,7 +284,7 @@ std::string active_set_name(unsigned a)
   return s;
 }
 
-HtcConcrete::HtcConcrete(const ConcreteParameters& p) : p_(p)
+HtcConcrete::HtcConcrete(const ConcreteParameters& p) : _p(p)
 {
   auto require = [](bool ok, const char* what)
   {
@@ -310,24 +310,24 @@ HtcConcrete::HtcConcrete(const ConcreteParameters& p) : p_(p)
   require(p.max_substeps >= 1, "max_substeps must be >= 1");
 
   const double fac = p.dynamic_30_percent ? p.dynamic_factor : 1.0;
-  d_.E = fac * p.E;
-  d_.nu = p.nu;
-  d_.G = d_.E / (2.0 * (1.0 + p.nu));
-  d_.lambda = d_.E * p.nu / ((1.0 + p.nu) * (1.0 - 2.0 * p.nu));
-  d_.K = d_.E / (3.0 * (1.0 - 2.0 * p.nu));
-  d_.fc0 = fac * p.fc0;
+  _d.E = fac * p.E;
+  _d.nu = p.nu;
+  _d.G = _d.E / (2.0 * (1.0 + p.nu));
+  _d.lambda = _d.E * p.nu / ((1.0 + p.nu) * (1.0 - 2.0 * p.nu));
+  _d.K = _d.E / (3.0 * (1.0 - 2.0 * p.nu));
+  _d.fc0 = fac * p.fc0;
   const double ft0 = fac * p.ft0;
 
-  d_.calibration = p.classic_shape ? classic_calibration()
+  _d.calibration = p.classic_shape ? classic_calibration()
                                    : HtcCalibration{p.ft0 / p.fc0, p.fbc_ratio,
                                                     p.xi0, p.rho0};
-  family_ = HtcFamily(d_.calibration.fbc_ratio, d_.calibration.xi0,
-                      d_.calibration.rho0);
+  _family = HtcFamily(_d.calibration.fbc_ratio, _d.calibration.xi0,
+                      _d.calibration.rho0);
   // Convexity over the whole range the guard allows (A, B, C >= 0).
   for (int i = 0; i <= 20; ++i)
   {
     const double rho = p.rho_min + (p.rho_max - p.rho_min) * i / 20.0;
-    const auto k = family_.at(rho);
+    const auto k = _family.at(rho);
     require(k.A >= 0 && k.B >= 0 && k.C >= 0,
             "HTC surface not convex for ft/fc in [rho_min, rho_max]; "
             "narrow the range");
@@ -342,15 +342,15 @@ HtcConcrete::HtcConcrete(const ConcreteParameters& p) : p_(p)
   // ft0 is lowered so that the modulus is E / snap_back_safety: the energy
   // is still Gf / h (algorithms.md 1.3 remedy).
   const double h = p.element_size;
-  d_.l_ch = d_.E * p.Gf / (ft0 * ft0);
-  d_.ft0 = ft0;
-  d_.tension_strength_reduced = false;
-  if (ft0 * ft0 * h / p.Gf > d_.E / p.snap_back_safety)
+  _d.l_ch = _d.E * p.Gf / (ft0 * ft0);
+  _d.ft0 = ft0;
+  _d.tension_strength_reduced = false;
+  if (ft0 * ft0 * h / p.Gf > _d.E / p.snap_back_safety)
   {
-    d_.ft0 = std::sqrt(d_.E * p.Gf / (p.snap_back_safety * h));
-    d_.tension_strength_reduced = true;
+    _d.ft0 = std::sqrt(_d.E * p.Gf / (p.snap_back_safety * h));
+    _d.tension_strength_reduced = true;
   }
-  d_.kappa_tu = c23 * p.Gf / (h * d_.ft0);
+  _d.kappa_tu = c23 * p.Gf / (h * _d.ft0);
 
   // Compression: Hc = max(exp(-kappa_c / kappa_cs), floor). In uniaxial
   // compression the flow sits on the compressive-meridian edge (symmetric
@@ -362,12 +362,12 @@ HtcConcrete::HtcConcrete(const ConcreteParameters& p) : p_(p)
   // elements the compressive energy exceeds Gc / h; documented).
   auto rho_of = [&](double fc)
   {
-    return std::clamp((1.0 + p.htc_tension_offset) * d_.ft0 / fc,
+    return std::clamp((1.0 + p.htc_tension_offset) * _d.ft0 / fc,
                       p.rho_min * 1.0, p.rho_max);
   };
   auto k_c = [&](double rho)
   {
-    const auto k = family_.at(rho);
+    const auto k = _family.at(rho);
     const double dev[3] = {1.0 / 3.0, 1.0 / 3.0, -2.0 / 3.0};
     const double q = 1.0 / std::sqrt(3.0);
     double n[3], nn = 0;
@@ -379,7 +379,7 @@ HtcConcrete::HtcConcrete(const ConcreteParameters& p) : p_(p)
     }
     return std::abs(n[2]) / (c23 * std::sqrt(nn));
   };
-  d_.uniaxial_compression_dissipation = k_c(rho_of(d_.fc0));
+  _d.uniaxial_compression_dissipation = k_c(rho_of(_d.fc0));
   {
     const double uf = -std::log(p.compressive_floor);
     const int n = 400;
@@ -388,15 +388,15 @@ HtcConcrete::HtcConcrete(const ConcreteParameters& p) : p_(p)
     {
       const double u = uf * i / n;
       const double w = (i == 0 || i == n) ? 1.0 : (i % 2 ? 4.0 : 2.0);
-      I += w * std::exp(-u) * k_c(rho_of(d_.fc0 * std::exp(-u)));
+      I += w * std::exp(-u) * k_c(rho_of(_d.fc0 * std::exp(-u)));
     }
     I *= uf / (3.0 * n);
-    d_.kappa_cs = p.Gc / (h * d_.fc0 * I);
+    _d.kappa_cs = p.Gc / (h * _d.fc0 * I);
   }
-  const double kcs_min = p.snap_back_safety * d_.fc0 /
-                         (d_.E * d_.uniaxial_compression_dissipation);
-  d_.compression_energy_raised = d_.kappa_cs < kcs_min;
-  d_.kappa_cs = std::max(d_.kappa_cs, kcs_min);
+  const double kcs_min = p.snap_back_safety * _d.fc0 /
+                         (_d.E * _d.uniaxial_compression_dissipation);
+  _d.compression_energy_raised = _d.kappa_cs < kcs_min;
+  _d.kappa_cs = std::max(_d.kappa_cs, kcs_min);
 
   // Rate functions. The CEB-FIP DIF is a function of the total axial strain
   // rate; at the peak of a constant-rate uniaxial test sigma_dot = 0, so the
@@ -406,38 +406,38 @@ HtcConcrete::HtcConcrete(const ConcreteParameters& p) : p_(p)
   // CEB one. Checked by single-point simulations (test_material_rate.cpp).
   if (p.rate_law == RateLaw::ceb_fip)
   {
-    d_.rate_c = {RateLaw::ceb_fip, ceb_exponent_compression(p.fc0),
+    _d.rate_c = {RateLaw::ceb_fip, ceb_exponent_compression(p.fc0),
                  p.rate_shift_c * ceb_reference_rate_compression /
-                     d_.uniaxial_compression_dissipation,
+                     _d.uniaxial_compression_dissipation,
                  0.0};
-    d_.rate_t = {RateLaw::ceb_fip, ceb_exponent_tension(p.fc0),
+    _d.rate_t = {RateLaw::ceb_fip, ceb_exponent_tension(p.fc0),
                  p.rate_shift_t * c23 * ceb_reference_rate_tension, 0.0};
   }
   else if (p.rate_law == RateLaw::linear)
   {
-    d_.rate_c = {RateLaw::linear, 0.0, 1.0, p.eta_c};
-    d_.rate_t = {RateLaw::linear, 0.0, 1.0, p.eta_t};
+    _d.rate_c = {RateLaw::linear, 0.0, 1.0, p.eta_c};
+    _d.rate_t = {RateLaw::linear, 0.0, 1.0, p.eta_t};
   }
-  rate_on_ = p.mode == Mode::viscoplastic && p.rate_law != RateLaw::none;
-  log_c_ = rate_on_ && d_.rate_c.law == RateLaw::ceb_fip;
-  log_t_ = rate_on_ && d_.rate_t.law == RateLaw::ceb_fip;
-  // admissible()'s untouched point (virgin_ifc_ is 0 until then).
-  rest_strengths(0.0, 0.0, virgin_ft_, virgin_ifc_, virgin_htc_);
+  _rate_on = p.mode == Mode::viscoplastic && p.rate_law != RateLaw::none;
+  _log_c = _rate_on && _d.rate_c.law == RateLaw::ceb_fip;
+  _log_t = _rate_on && _d.rate_t.law == RateLaw::ceb_fip;
+  // admissible()'s untouched point (_virgin_ifc is 0 until then).
+  rest_strengths(0.0, 0.0, _virgin_ft, _virgin_ifc, _virgin_htc);
 }
 
 void HtcConcrete::rest_strengths(double kc, double kt, double& ft, double& ifc,
                                  std::array<double, 4>& X) const
 {
-  if (kc == 0.0 && kt == 0.0 && virgin_ifc_ > 0.0)
+  if (kc == 0.0 && kt == 0.0 && _virgin_ifc > 0.0)
   {
-    ft = virgin_ft_;
-    ifc = virgin_ifc_;
-    X = virgin_htc_;
+    ft = _virgin_ft;
+    ifc = _virgin_ifc;
+    X = _virgin_htc;
     return;
   }
   // surfaces() with R = 1 (its zero-rate case), by the same expressions.
-  const double fc = d_.fc0 * hc(kc);
-  ft = d_.ft0 * std::exp(-kt / d_.kappa_tu);
+  const double fc = _d.fc0 * hc(kc);
+  ft = _d.ft0 * std::exp(-kt / _d.kappa_tu);
   ifc = 1.0 / fc;
   X = htc_of(ft, fc, ifc);
 }
@@ -447,16 +447,16 @@ std::array<T, 4> HtcConcrete::htc_of(const T& ft, const T& fc,
                                      const T& ifc) const
 {
   const T ftH =
-      vmin(vmax(T((1.0 + p_.htc_tension_offset) * ft), T(p_.rho_min * fc)),
-           T(p_.rho_max * fc));
-  return family_.coefficients(T(ftH * ifc));
+      vmin(vmax(T((1.0 + _p.htc_tension_offset) * ft), T(_p.rho_min * fc)),
+           T(_p.rho_max * fc));
+  return _family.coefficients(T(ftH * ifc));
 }
 
 template <class T>
 T HtcConcrete::hc(const T& kc) const
 {
   using std::exp;
-  return vmax(T(exp(-kc / d_.kappa_cs)), T(p_.compressive_floor));
+  return vmax(T(exp(-kc / _d.kappa_cs)), T(_p.compressive_floor));
 }
 
 template <class T>
@@ -474,16 +474,16 @@ void HtcConcrete::surfaces(const std::array<T, 3>& s, const T& kc, const T& kt,
   // derivatives).
   auto rate = [&](const RateFunction& f, const T& kd) -> T
   {
-    if (!rate_on_)
+    if (!_rate_on)
       return T(1.0);
     if constexpr (std::is_same_v<T, double>)
       if (kd == 0.0)
         return 1.0;
     return f(vmax(kd, T(-0.999 * f.kdot0)));
   };
-  const T Rc = rate(d_.rate_c, kcd), Rt = rate(d_.rate_t, ktd);
-  const T fc = d_.fc0 * hc(kc) * Rc;
-  const T ft = d_.ft0 * exp(-kt / d_.kappa_tu) * Rt;
+  const T Rc = rate(_d.rate_c, kcd), Rt = rate(_d.rate_t, ktd);
+  const T fc = _d.fc0 * hc(kc) * Rc;
+  const T ft = _d.ft0 * exp(-kt / _d.kappa_tu) * Rt;
   const T ifc = 1.0 / fc;
   surfaces_at(s, ft, ifc, htc_of(ft, fc, ifc), phi, n);
 }
@@ -499,9 +499,9 @@ void HtcConcrete::surfaces_at(const std::array<T, 3>& s, const T& ft,
   const T m = I1 / 3.0;
   const std::array<T, 3> dev = {s[0] - m, s[1] - m, s[2] - m};
   const T J2 = 0.5 * (dev[0] * dev[0] + dev[1] * dev[1] + dev[2] * dev[2]);
-  const T q = sqrt(J2 + 1e-30 * d_.fc0 * d_.fc0);
+  const T q = sqrt(J2 + 1e-30 * _d.fc0 * _d.fc0);
   const T common = X[0] * J2 * ifc * ifc + X[1] * q * ifc + X[3] * I1 * ifc;
-  const double f0 = d_.fc0;
+  const double f0 = _d.fc0;
   phi[0] = f0 * (common + X[2] * s[0] * ifc - 1.0);
   phi[1] = f0 * (common + X[2] * s[1] * ifc - 1.0);
   for (int i = 0; i < 3; ++i)
@@ -554,19 +554,19 @@ void HtcConcrete::reduced(const T* y, const int* ids, const T* str, double kcn,
       R = f(vmax(T((k - kn) / dt), T(-0.999 * f.kdot0)));
   };
   if (lc)
-    log_rate(d_.rate_c, y[M], kcn, kc, Rc, iec);
+    log_rate(_d.rate_c, y[M], kcn, kc, Rc, iec);
   else
-    plain(d_.rate_c, y[M], kcn, kc, Rc);
+    plain(_d.rate_c, y[M], kcn, kc, Rc);
   if (lt)
-    log_rate(d_.rate_t, y[M + 1], ktn, kt, Rt, iet);
+    log_rate(_d.rate_t, y[M + 1], ktn, kt, Rt, iet);
   else
-    plain(d_.rate_t, y[M + 1], ktn, kt, Rt);
+    plain(_d.rate_t, y[M + 1], ktn, kt, Rt);
   // Strengths and the HTC coefficients (as in surfaces()).
-  const T fc = d_.fc0 * hc(kc) * Rc;
-  const T ft = d_.ft0 * exp(-kt / d_.kappa_tu) * Rt;
+  const T fc = _d.fc0 * hc(kc) * Rc;
+  const T ft = _d.ft0 * exp(-kt / _d.kappa_tu) * Rt;
   const T ifc = 1.0 / fc;
   const auto X = htc_of(ft, fc, ifc);
-  const double f0 = d_.fc0, G2 = 2.0 * d_.G, K = d_.K;
+  const double f0 = _d.fc0, G2 = 2.0 * _d.G, K = _d.K;
   // Gradient of the HTC branch k: n_k = a(q) s + b 1 + c e_k with
   // a(q) = alpha + beta / q, q = sqrt(J2).
   const T alpha = f0 * X[0] * ifc * ifc, beta = 0.5 * f0 * X[1] * ifc;
@@ -645,7 +645,7 @@ void HtcConcrete::reduced(const T* y, const int* ids, const T* str, double kcn,
   {
     const int k = ids[j];
     if (k == 1 && split)
-      r[j] = (lh0 - lh1) * (d_.E / f0);
+      r[j] = (lh0 - lh1) * (_d.E / f0);
     else
       r[j] = k < 2 || k == 5
                  ? T(common + X[2] * sig[k == 5 ? 0 : k] * ifc - 1.0)
@@ -703,7 +703,7 @@ void HtcConcrete::reduced(const T* y, const int* ids, const T* str, double kcn,
   const T w = sp / sa;
   const T dkc = (1.0 - w) * c23 * nh;
   const T dkt = w * c23 * nh + c23 * nr;
-  const double sK = d_.E / f0;
+  const double sK = _d.E / f0;
   // Rate equations of the log-rate unknowns, y = log(1 + dk / (dt kdot0)),
   // in the form delta (1 - (1 + dk / (dt kdot0)) e^-y): scaled by the
   // exponent (near the root, the relative error of R, like the other rows),
@@ -714,15 +714,15 @@ void HtcConcrete::reduced(const T* y, const int* ids, const T* str, double kcn,
   // domain of the logarithm and crawl.
   if (lc)
   {
-    const T arg = 1.0 + dkc / (dt * d_.rate_c.kdot0);
-    r[M] = T(d_.rate_c.delta * (1.0 - arg * iec));
+    const T arg = 1.0 + dkc / (dt * _d.rate_c.kdot0);
+    r[M] = T(_d.rate_c.delta * (1.0 - arg * iec));
   }
   else
     r[M] = (kc - kcn - dkc) * sK;
   if (lt)
   {
-    const T arg = 1.0 + dkt / (dt * d_.rate_t.kdot0);
-    r[M + 1] = T(d_.rate_t.delta * (1.0 - arg * iet));
+    const T arg = 1.0 + dkt / (dt * _d.rate_t.kdot0);
+    r[M + 1] = T(_d.rate_t.delta * (1.0 - arg * iet));
   }
   else
     r[M + 1] = (kt - ktn - dkt) * sK;
@@ -746,7 +746,7 @@ void HtcConcrete::residual_full(const std::array<T, 5 + M>& x, const int* ids,
   T kc, kt, kcd, ktd;
   if (lc)
   {
-    kcd = d_.rate_c.kdot0 * (exp(x[3]) - 1.0);
+    kcd = _d.rate_c.kdot0 * (exp(x[3]) - 1.0);
     kc = kcn + dt * kcd;
   }
   else
@@ -756,7 +756,7 @@ void HtcConcrete::residual_full(const std::array<T, 5 + M>& x, const int* ids,
   }
   if (lt)
   {
-    ktd = d_.rate_t.kdot0 * (exp(x[4]) - 1.0);
+    ktd = _d.rate_t.kdot0 * (exp(x[4]) - 1.0);
     kt = ktn + dt * ktd;
   }
   else
@@ -780,7 +780,7 @@ void HtcConcrete::residual_full(const std::array<T, 5 + M>& x, const int* ids,
   }
   const T tr = eh[0] + eh[1] + eh[2] + er[0] + er[1] + er[2];
   for (int i = 0; i < 3; ++i)
-    r[i] = s[i] - str[i] + d_.lambda * tr + 2.0 * d_.G * (eh[i] + er[i]);
+    r[i] = s[i] - str[i] + _d.lambda * tr + 2.0 * _d.G * (eh[i] + er[i]);
   T nh = sqrt(eh[0] * eh[0] + eh[1] * eh[1] + eh[2] * eh[2]);
   T nr = sqrt(er[0] * er[0] + er[1] * er[1] + er[2] * er[2]);
   if (value(nh) == 0.0 || value(nr) == 0.0)
@@ -807,7 +807,7 @@ void HtcConcrete::residual_full(const std::array<T, 5 + M>& x, const int* ids,
   // w = sum <s_i> / sum |s_i|, with |x| smoothed as sqrt(x^2 + e^2),
   // e = 1e-6 fc0: the kinks at s_i = 0 (uniaxial and biaxial states sit
   // exactly there) would otherwise stall the Newton iteration.
-  const double e2 = 1e-12 * d_.fc0 * d_.fc0;
+  const double e2 = 1e-12 * _d.fc0 * _d.fc0;
   T sa(0.0), sp(0.0);
   for (int i = 0; i < 3; ++i)
   {
@@ -818,9 +818,9 @@ void HtcConcrete::residual_full(const std::array<T, 5 + M>& x, const int* ids,
   const T w = sp / sa;
   const T dkc = (1.0 - w) * c23 * nh;
   const T dkt = w * c23 * nh + c23 * nr;
-  r[3] = lc ? T(x[3] - log(1.0 + dkc / (dt * d_.rate_c.kdot0)))
+  r[3] = lc ? T(x[3] - log(1.0 + dkc / (dt * _d.rate_c.kdot0)))
             : T(kc - kcn - dkc);
-  r[4] = lt ? T(x[4] - log(1.0 + dkt / (dt * d_.rate_t.kdot0)))
+  r[4] = lt ? T(x[4] - log(1.0 + dkt / (dt * _d.rate_t.kdot0)))
             : T(kt - ktn - dkt);
   for (int j = 0; j < M; ++j)
     r[5 + j] = phi[ids[j]];
@@ -844,8 +844,8 @@ bool HtcConcrete::solve_full(unsigned set, const std::array<double, 3>& str,
   // Log-rate unknowns only for the mechanisms of the active set: a rate
   // variable driven by a tiny share of the flow (e.g. kappa_t under HTC flow
   // in compression) is badly scaled in log form and stays plain.
-  const bool lc = log_c_ && (set & (htc_surface | htc_edge));
-  const bool lt = log_t_ && (set & (rankine_1 | rankine_2 | rankine_3));
+  const bool lc = _log_c && (set & (htc_surface | htc_edge));
+  const bool lt = _log_t && (set & (rankine_1 | rankine_2 | rankine_3));
   std::array<double, N> x{};
   x[0] = str[0];
   x[1] = str[1];
@@ -853,9 +853,9 @@ bool HtcConcrete::solve_full(unsigned set, const std::array<double, 3>& str,
   // Log-rate unknowns start from the rate of the previous step (a good
   // guess under smooth loading); multipliers start at zero.
   // (kcd_old < 0 requests the zero-rate start, used as a retry.)
-  x[3] = lc ? std::log1p(std::max(kcd_old, 0.0) / d_.rate_c.kdot0) : kcn;
-  x[4] = lt ? std::log1p(std::max(ktd_old, 0.0) / d_.rate_t.kdot0) : ktn;
-  const double sS = 1.0 / d_.fc0, sK = d_.E / d_.fc0;
+  x[3] = lc ? std::log1p(std::max(kcd_old, 0.0) / _d.rate_c.kdot0) : kcn;
+  x[4] = lt ? std::log1p(std::max(ktd_old, 0.0) / _d.rate_t.kdot0) : ktn;
+  const double sS = 1.0 / _d.fc0, sK = _d.E / _d.fc0;
   std::array<D, N> xd, rd;
   std::array<double, N * N> J;
   std::array<int, N> piv;
@@ -885,7 +885,7 @@ bool HtcConcrete::solve_full(unsigned set, const std::array<double, 3>& str,
       return std::isfinite(v) ? std::sqrt(v)
                               : std::numeric_limits<double>::infinity();
     };
-    for (int it = 0; it < p_.max_iterations; ++it)
+    for (int it = 0; it < _p.max_iterations; ++it)
     {
       for (int i = 0; i < N; ++i)
         xd[i] = D::variable(x[i], i);
@@ -900,7 +900,7 @@ bool HtcConcrete::solve_full(unsigned set, const std::array<double, 3>& str,
       if (!lu_factor<N>(J, piv))
         return false;
       lu_solve<N>(J, piv, dx);
-      if (r0 < p_.tolerance)
+      if (r0 < _p.tolerance)
       {
         // One more (polishing) Newton step brings the solution to
         // round-off, so the tangent is the derivative of the returned map.
@@ -943,9 +943,9 @@ bool HtcConcrete::solve_full(unsigned set, const std::array<double, 3>& str,
   // increments give the starting log-rates (from zero multipliers and far
   // rates the logarithmic rate law makes Newton crawl).
   const std::array<double, N> x0 = x;
-  if (!newton(lc, lt, rate_on_, x))
+  if (!newton(lc, lt, _rate_on, x))
   {
-    if (!rate_on_ || kcd_old < 0.0)
+    if (!_rate_on || kcd_old < 0.0)
       return false;
     std::array<double, N> xp{};
     xp[0] = str[0];
@@ -956,11 +956,11 @@ bool HtcConcrete::solve_full(unsigned set, const std::array<double, 3>& str,
     if (!newton(false, false, false, xp))
       return false;
     x = xp;
-    x[3] = lc ? std::log1p(std::max(xp[3] - kcn, 0.0) / (dt * d_.rate_c.kdot0))
+    x[3] = lc ? std::log1p(std::max(xp[3] - kcn, 0.0) / (dt * _d.rate_c.kdot0))
               : xp[3];
-    x[4] = lt ? std::log1p(std::max(xp[4] - ktn, 0.0) / (dt * d_.rate_t.kdot0))
+    x[4] = lt ? std::log1p(std::max(xp[4] - ktn, 0.0) / (dt * _d.rate_t.kdot0))
               : xp[4];
-    if (x == x0 || !newton(lc, lt, rate_on_, x))
+    if (x == x0 || !newton(lc, lt, _rate_on, x))
       return false;
   }
   for (int c = 0; c < 3; ++c)
@@ -974,9 +974,9 @@ bool HtcConcrete::solve_full(unsigned set, const std::array<double, 3>& str,
   for (int i = 0; i < N; ++i)
     xout[i] = x[i];
   if (lc)
-    xout[3] = kcn + dt * d_.rate_c.kdot0 * std::expm1(x[3]);
+    xout[3] = kcn + dt * _d.rate_c.kdot0 * std::expm1(x[3]);
   if (lt)
-    xout[4] = ktn + dt * d_.rate_t.kdot0 * std::expm1(x[4]);
+    xout[4] = ktn + dt * _d.rate_t.kdot0 * std::expm1(x[4]);
   return true;
 }
 
@@ -989,10 +989,10 @@ double HtcConcrete::rankine_1_multiplier(double s1, double ktn, double dt,
   // stress): one root, as the softening modulus is below E. The power law
   // R = (1 + q mu)^delta enters as exp(delta log1p(q mu)), one exp and one
   // log1p per iteration instead of an exp and a pow.
-  const double a = modulus > 0.0 ? modulus : d_.lambda + 2.0 * d_.G,
-               c = c23 / d_.kappa_tu;
-  const double q = rates ? c23 / (dt * d_.rate_t.kdot0) : 0.0;
-  const double dl = d_.rate_t.delta, e0 = d_.ft0 * std::exp(-ktn / d_.kappa_tu);
+  const double a = modulus > 0.0 ? modulus : _d.lambda + 2.0 * _d.G,
+               c = c23 / _d.kappa_tu;
+  const double q = rates ? c23 / (dt * _d.rate_t.kdot0) : 0.0;
+  const double dl = _d.rate_t.delta, e0 = _d.ft0 * std::exp(-ktn / _d.kappa_tu);
   double lo = 0.0, hi = std::max(s1, 0.0) / a;
   double mu = std::clamp(guess >= 0.0 ? guess : (s1 - e0) / a, lo, hi);
   auto strength = [&](double m)
@@ -1001,7 +1001,7 @@ double HtcConcrete::rankine_1_multiplier(double s1, double ktn, double dt,
   for (int it = 0; it < 60; ++it)
   {
     const double g = s1 - a * mu - ft;
-    if (std::abs(g) <= 1e-14 * d_.fc0)
+    if (std::abs(g) <= 1e-14 * _d.fc0)
       break;
     (g > 0.0 ? lo : hi) = mu;
     const double dg = -a + ft * (c - (rates ? dl * q / (1.0 + q * mu) : 0.0));
@@ -1043,16 +1043,16 @@ bool HtcConcrete::solve_set(unsigned set, const std::array<double, 3>& str,
   double sig[3];
   D sigd[3];
   const double lmax =
-      10.0 * (std::abs(str[0]) + std::abs(str[1]) + std::abs(str[2]) + d_.fc0) /
-      d_.E; // bound on any multiplier (strain units)
+      10.0 * (std::abs(str[0]) + std::abs(str[1]) + std::abs(str[2]) + _d.fc0) /
+      _d.E; // bound on any multiplier (strain units)
 
   // Damped Newton on the reduced system; on success y is converged.
-  // (tol: scaled residual tolerance, p_.tolerance unless given.)
+  // (tol: scaled residual tolerance, _p.tolerance unless given.)
   auto newton = [&](bool lc, bool lt, bool rates, std::array<double, N>& y,
                     double tol = -1.0) -> bool
   {
     if (tol < 0.0)
-      tol = p_.tolerance;
+      tol = _p.tolerance;
     auto merit = [&](const auto& r)
     {
       double v = 0;
@@ -1073,7 +1073,7 @@ bool HtcConcrete::solve_set(unsigned set, const std::array<double, 3>& str,
     };
     bool fresh = false;
     double hist[4] = {0, 0, 0, 0}; // merit of the last iterations
-    for (int it = 0; it < p_.max_iterations; ++it)
+    for (int it = 0; it < _p.max_iterations; ++it)
     {
       if (!fresh)
         eval_jacobian(y, rd);
@@ -1117,9 +1117,9 @@ bool HtcConcrete::solve_set(unsigned set, const std::array<double, 3>& str,
         double v = 0;
         for (int i = 0; i < N; ++i)
         {
-          const double w = i == M && lc       ? d_.rate_c.delta
-                           : i == M + 1 && lt ? d_.rate_t.delta
-                                              : d_.E / d_.fc0;
+          const double w = i == M && lc       ? _d.rate_c.delta
+                           : i == M + 1 && lt ? _d.rate_t.delta
+                                              : _d.E / _d.fc0;
           v += (w * d[i]) * (w * d[i]);
         }
         return std::sqrt(v);
@@ -1179,7 +1179,7 @@ bool HtcConcrete::solve_set(unsigned set, const std::array<double, 3>& str,
     return false;
   };
 
-  const bool rates = rate_on_;
+  const bool rates = _rate_on;
   bool lc = false, lt = false;
   std::array<double, N> y{};
   y[M] = kcn;
@@ -1188,18 +1188,18 @@ bool HtcConcrete::solve_set(unsigned set, const std::array<double, 3>& str,
   auto from = [&](const std::array<double, N>& src, double rc, double rt2)
   {
     y = src;
-    lc = log_c_;
-    lt = log_t_;
+    lc = _log_c;
+    lt = _log_t;
     if (lc)
-      y[M] = std::log1p(std::max(rc, 0.0) / d_.rate_c.kdot0);
+      y[M] = std::log1p(std::max(rc, 0.0) / _d.rate_c.kdot0);
     if (lt)
-      y[M + 1] = std::log1p(std::max(rt2, 0.0) / d_.rate_t.kdot0);
+      y[M + 1] = std::log1p(std::max(rt2, 0.0) / _d.rate_t.kdot0);
   };
   // The Rankine plane sigma_1 <= ft alone (tensile points): the start is
   // the solution of the scalar equation of its return (the reduced
   // iteration only confirms it and gives the Jacobian), unless the rate
   // law is linear.
-  const bool r1 = set == rankine_1 && (!rates || log_t_);
+  const bool r1 = set == rankine_1 && (!rates || _log_t);
   bool ok = false;
   if (!rates)
   {
@@ -1242,7 +1242,7 @@ bool HtcConcrete::solve_set(unsigned set, const std::array<double, 3>& str,
         const double mu = rankine_1_multiplier(str[0], ktn, dt, true);
         y[0] = mu;
         y[M] = lc ? 0.0 : kcn; // no kappa_c flow
-        y[M + 1] = std::log1p(c23 * mu / (dt * d_.rate_t.kdot0));
+        y[M + 1] = std::log1p(c23 * mu / (dt * _d.rate_t.kdot0));
         ok = newton(lc, lt, true, y);
         if (!ok)
           from(y0, kcd_old, ktd_old);
@@ -1253,10 +1253,10 @@ bool HtcConcrete::solve_set(unsigned set, const std::array<double, 3>& str,
         double sum = 0.0;
         for (int j = 0; j < M; ++j)
           sum += str[ids[j] - 2] - ft;
-        sum /= 2.0 * d_.G + M * d_.lambda;
+        sum /= 2.0 * _d.G + M * _d.lambda;
         for (int j = 0; j < M; ++j)
           y[j] = std::max(
-              (str[ids[j] - 2] - ft - d_.lambda * sum) / (2.0 * d_.G), 0.0);
+              (str[ids[j] - 2] - ft - _d.lambda * sum) / (2.0 * _d.G), 0.0);
         ok = newton(lc, lt, true, y);
       }
     }
@@ -1273,7 +1273,7 @@ bool HtcConcrete::solve_set(unsigned set, const std::array<double, 3>& str,
       std::array<double, N> yp = y0;
       // Only a start: converged to 1e-6 (its last quadratic step,
       // 1e-6 -> 1e-12, does not change the viscoplastic root).
-      if (newton(false, false, false, yp, std::max(p_.tolerance, 1e-6)))
+      if (newton(false, false, false, yp, std::max(_p.tolerance, 1e-6)))
       {
         // A small edge share of the rate-independent flow: the
         // viscoplastic return (less flow) most likely leaves the edge
@@ -1319,13 +1319,13 @@ bool HtcConcrete::solve_set(unsigned set, const std::array<double, 3>& str,
             yw[j] = std::max(warm[5 + jw], 0.0);
         ++jw;
       }
-    lc = rates && log_c_;
-    lt = rates && log_t_;
+    lc = rates && _log_c;
+    lt = rates && _log_t;
     yw[M] =
-        lc ? std::log1p(std::max(warm[3] - kcn, 0.0) / (dt * d_.rate_c.kdot0))
+        lc ? std::log1p(std::max(warm[3] - kcn, 0.0) / (dt * _d.rate_c.kdot0))
            : warm[3];
     yw[M + 1] =
-        lt ? std::log1p(std::max(warm[4] - ktn, 0.0) / (dt * d_.rate_t.kdot0))
+        lt ? std::log1p(std::max(warm[4] - ktn, 0.0) / (dt * _d.rate_t.kdot0))
            : warm[4];
     y = yw;
     ok = newton(lc, lt, rates, y);
@@ -1382,8 +1382,8 @@ bool HtcConcrete::solve_set(unsigned set, const std::array<double, 3>& str,
       s += sigd[i].d[j] * dy[j];
     xout[i] = s;
   }
-  xout[3] = lc ? kcn + dt * d_.rate_c.kdot0 * std::expm1(y[M]) : y[M];
-  xout[4] = lt ? ktn + dt * d_.rate_t.kdot0 * std::expm1(y[M + 1]) : y[M + 1];
+  xout[3] = lc ? kcn + dt * _d.rate_c.kdot0 * std::expm1(y[M]) : y[M];
+  xout[4] = lt ? ktn + dt * _d.rate_t.kdot0 * std::expm1(y[M + 1]) : y[M + 1];
   for (int j = 0; j < M; ++j)
     xout[5 + j] = y[j];
   return true;
@@ -1396,10 +1396,10 @@ HtcConcrete::predict_set(const std::array<double, 3>& str, double kc, double kt,
 {
   // Frozen surfaces (old internal variables, static rates): one
   // cutting-plane step per mechanism, closed form for the Rankine planes.
-  const double tol = p_.tolerance * d_.fc0;
+  const double tol = _p.tolerance * _d.fc0;
   const bool vh = phi[0] > tol, vr = phi[2] > tol;
   const double ft = str[0] - phi[2];
-  const double a = d_.lambda + 2.0 * d_.G, l = d_.lambda;
+  const double a = _d.lambda + 2.0 * _d.G, l = _d.lambda;
   // Rankine return: number of planes and the returned stresses.
   unsigned rset = rankine_1;
   std::array<double, 3> sr;
@@ -1428,7 +1428,7 @@ HtcConcrete::predict_set(const std::array<double, 3>& str, double kc, double kt,
     double Dn[3], nDn = 0;
     for (int i = 0; i < 3; ++i)
     {
-      Dn[i] = l * tr + 2.0 * d_.G * g[i];
+      Dn[i] = l * tr + 2.0 * _d.G * g[i];
       nDn += g[i] * Dn[i];
     }
     const double lam = nDn > 0.0 ? std::max(phi[0], 0.0) / nDn : 0.0;
@@ -1485,7 +1485,7 @@ Update HtcConcrete::integrate(const State& old, const Vector6& de,
     out.state = s;
     return true;
   };
-  for (int n = 2; n <= p_.max_substeps; n *= 2)
+  for (int n = 2; n <= _p.max_substeps; n *= 2)
   {
     Update w;
     if (!substepped(de, n, w))
@@ -1529,9 +1529,9 @@ Update HtcConcrete::integrate_step(const State& old, const Vector6& de,
   u.state.stress = tr;
   u.state.kappa_c_rate = u.state.kappa_t_rate = 0.0;
   u.tangent = De;
-  if (p_.mode == Mode::elastic)
+  if (_p.mode == Mode::elastic)
     return u;
-  if (rate_on_ && !(dt > 0.0))
+  if (_rate_on && !(dt > 0.0))
     throw std::invalid_argument(
         "HtcConcrete::integrate: viscoplastic mode needs dt > 0");
 
@@ -1562,12 +1562,12 @@ Update HtcConcrete::integrate_step(const State& old, const Vector6& de,
   unsigned set = set0;
 
   std::array<double, 9> x{}, C{};
-  const double tol_viol = 1e-8 * d_.fc0, tol_lam = -1e-13;
+  const double tol_viol = 1e-8 * _d.fc0, tol_lam = -1e-13;
   std::uint64_t visited = 0; // bit s: set s already tried
   unsigned warm_set = 0;     // last set solved, and its solution
   std::array<double, 9> warm{};
   auto tried = [&](unsigned s) { return (visited >> s) & 1u; };
-  bool probe_edge = rate_on_; // see solve_set
+  bool probe_edge = _rate_on; // see solve_set
 
   // Solves one set and checks the Kuhn-Tucker conditions; returns 0 if
   // consistent, otherwise the next set to try (or 0xff if none).
@@ -1631,7 +1631,7 @@ Update HtcConcrete::integrate_step(const State& old, const Vector6& de,
         default:
           ok = solve_full<4>(s, str, kc, kt, c, t, dt, x, C, u.iterations);
         }
-        if (!rate_on_ || (kcd <= 0.0 && ktd <= 0.0))
+        if (!_rate_on || (kcd <= 0.0 && ktd <= 0.0))
           break;
       }
     }
@@ -1664,8 +1664,8 @@ Update HtcConcrete::integrate_step(const State& old, const Vector6& de,
       return ns;
     }
     // Violated inactive surfaces: add the most violated one.
-    const double kcdn = rate_on_ ? (x[3] - old.kappa_c) / dt : 0.0;
-    const double ktdn = rate_on_ ? (x[4] - old.kappa_t) / dt : 0.0;
+    const double kcdn = _rate_on ? (x[3] - old.kappa_c) / dt : 0.0;
+    const double ktdn = _rate_on ? (x[4] - old.kappa_t) / dt : 0.0;
     std::array<double, 5> ph;
     surfaces<double>({x[0], x[1], x[2]}, x[3], x[4], kcdn, ktdn, ph, nullptr);
     int add = -1;
@@ -1742,7 +1742,7 @@ Update HtcConcrete::integrate_step(const State& old, const Vector6& de,
   ns.kappa_t = x[4];
   ns.kappa_c_rate = dt > 0 ? (x[3] - old.kappa_c) / dt : 0.0;
   ns.kappa_t_rate = dt > 0 ? (x[4] - old.kappa_t) / dt : 0.0;
-  add_plastic_strain(ns.plastic_strain, tr, ns.stress, d_.E, d_.nu, d_.G);
+  add_plastic_strain(ns.plastic_strain, tr, ns.stress, _d.E, _d.nu, _d.G);
 
   // Consistent tangent: d(sigma)/d(sigma_tr) of the coaxial return (the
   // principal part from the converged Jacobian), times D.
@@ -1764,7 +1764,7 @@ Matrix6 HtcConcrete::coaxial_tangent(
     {
       double s = 0;
       for (int k = 0; k < 3; ++k)
-        s += C[i * 3 + k] * (d_.lambda + (k == j ? 2.0 * d_.G : 0.0));
+        s += C[i * 3 + k] * (_d.lambda + (k == j ? 2.0 * _d.G : 0.0));
       CD[i][j] = s;
     }
   // The rank-one terms over the nonzero components only (in-plane
@@ -1789,13 +1789,13 @@ Matrix6 HtcConcrete::coaxial_tangent(
   {
     const int i = pr[0], j = pr[1];
     const double dl = str[i] - str[j];
-    const double scale = std::abs(str[i]) + std::abs(str[j]) + 1e-3 * d_.fc0;
+    const double scale = std::abs(str[i]) + std::abs(str[j]) + 1e-3 * _d.fc0;
     const double theta = std::abs(dl) > 1e-9 * scale
                              ? (x[i] - x[j]) / dl
                              : C[i * 3 + i] - C[i * 3 + j];
     const Sparse6 Mv(outer_vec(nv[i], nv[j])); // (n_i n_j^T + n_j n_i^T)/2
     // normalised M = (n_i n_j^T + n_j n_i^T)/sqrt(2) = sqrt(2) * Mv
-    const double f = 2.0 * d_.G * theta * 2.0;
+    const double f = 2.0 * _d.G * theta * 2.0;
     for (int ka = 0; ka < Mv.n; ++ka)
     {
       const double fa = f * Mv.v[ka];
@@ -1815,11 +1815,11 @@ bool HtcConcrete::rankine_1_tangent(
   // sigma = str - mu D n1 with mu of the scalar consistency equation, which
   // only sigma_1's trial moves: d mu / d str_1 = 1 / (lambda + 2G +
   // dft/dmu).
-  const double a1 = d_.lambda + 2.0 * d_.G, lam = d_.lambda;
+  const double a1 = _d.lambda + 2.0 * _d.G, lam = _d.lambda;
   const double dft =
       ft *
-      (-c23 / d_.kappa_tu +
-       (rate_on_ ? d_.rate_t.delta * c23 / (dt * d_.rate_t.kdot0 + c23 * mu)
+      (-c23 / _d.kappa_tu +
+       (_rate_on ? _d.rate_t.delta * c23 / (dt * _d.rate_t.kdot0 + c23 * mu)
                  : 0.0));
   const double den = a1 + dft;
   if (!(den > 0.0))
@@ -1836,9 +1836,9 @@ bool HtcConcrete::rankine_1_others_hold(const std::array<double, 3>& x,
   // surfaces() at kappa_c = kc with zero rate and the kappa_t (and rate) of
   // strength ft; the HTC branches and sigma_2, sigma_3 <= ft within
   // integrate_step's tol_viol.
-  const double tol_viol = 1e-8 * d_.fc0;
+  const double tol_viol = 1e-8 * _d.fc0;
   std::array<double, 5> ph;
-  const double fc = d_.fc0 * hc(kc), ifc = 1.0 / fc;
+  const double fc = _d.fc0 * hc(kc), ifc = 1.0 / fc;
   surfaces_at<double>(x, ft, ifc, htc_of(ft, fc, ifc), ph, nullptr);
   return ph[0] <= tol_viol && ph[1] <= tol_viol && ph[3] <= tol_viol &&
          ph[4] <= tol_viol;
@@ -1848,12 +1848,12 @@ bool HtcConcrete::rankine_1_closed_form(
     const State& old, const Vector6& tr, const std::array<double, 3>& str,
     const std::array<std::array<double, 3>, 3>& dir, double dt, Update& u) const
 {
-  if (!p_.closed_form_tension || (rate_on_ && (!(dt > 0.0) || !log_t_)))
+  if (!_p.closed_form_tension || (_rate_on && (!(dt > 0.0) || !_log_t)))
     return false;
-  const double lam = d_.lambda, a1 = lam + 2.0 * d_.G;
+  const double lam = _d.lambda, a1 = lam + 2.0 * _d.G;
   const double kt0 = old.kappa_t, kc0 = old.kappa_c;
   double ft = 0.0;
-  const double mu = rankine_1_multiplier(str[0], kt0, dt, rate_on_, 0.0,
+  const double mu = rankine_1_multiplier(str[0], kt0, dt, _rate_on, 0.0,
                                          old_rate_multiplier(old, dt), &ft);
   if (!(mu > 0.0) || !std::isfinite(mu))
     return false;
@@ -1861,7 +1861,7 @@ bool HtcConcrete::rankine_1_closed_form(
                                    str[2] - lam * mu};
   // The Kuhn-Tucker check of integrate_step: converged to tol, the other
   // surfaces hold.
-  if (std::abs(x[0] - ft) > p_.tolerance * d_.fc0 || x[1] > x[0] ||
+  if (std::abs(x[0] - ft) > _p.tolerance * _d.fc0 || x[1] > x[0] ||
       !rankine_1_others_hold(x, kc0, ft))
   {
     return false;
@@ -1875,7 +1875,7 @@ bool HtcConcrete::rankine_1_closed_form(
   ns.kappa_t = kt0 + c23 * mu;
   ns.kappa_t_rate = dt > 0.0 ? (ns.kappa_t - kt0) / dt : 0.0;
   ns.kappa_c_rate = 0.0;
-  add_plastic_strain(ns.plastic_strain, tr, ns.stress, d_.E, d_.nu, d_.G);
+  add_plastic_strain(ns.plastic_strain, tr, ns.stress, _d.E, _d.nu, _d.G);
   u.tangent = T;
   u.active = rankine_1;
   u.iterations = 0;
@@ -1886,14 +1886,14 @@ bool HtcConcrete::rankine_1_closed_form(
 bool HtcConcrete::plane_stress_tension(const State& old, Vector6& de, double dt,
                                        Update& u) const
 {
-  if (p_.mode == Mode::elastic || old.stress[4] != 0.0 ||
+  if (_p.mode == Mode::elastic || old.stress[4] != 0.0 ||
       old.stress[5] != 0.0 || de[4] != 0.0 || de[5] != 0.0)
   {
     return false;
   }
-  if (rate_on_ && (!(dt > 0.0) || !log_t_))
+  if (_rate_on && (!(dt > 0.0) || !_log_t))
     return false;
-  const double E = d_.E, nu = d_.nu, lam = d_.lambda, G = d_.G;
+  const double E = _d.E, nu = _d.nu, lam = _d.lambda, G = _d.G;
   // In-plane trial with sigma_33 = 0 throughout (plane-stress elasticity).
   const double Ep = E / (1.0 - nu * nu);
   const double sx = old.stress[0] + Ep * (de[0] + nu * de[1]);
@@ -1906,14 +1906,14 @@ bool HtcConcrete::plane_stress_tension(const State& old, Vector6& de, double dt,
   // The plane sigma_1 <= ft must be violated at the old strength (the
   // elastic-trial test decides elasticity; here only the set).
   const double ft_old = tensile_strength(kt0, 0.0);
-  const double tol = p_.tolerance * d_.fc0;
+  const double tol = _p.tolerance * _d.fc0;
   if (!(s1 - ft_old > tol) || s1 <= 0.0)
     return false;
   // First iterate: the old rate's multiplier (the crack opens at a
   // steady rate over a few steps; 3.9 instead of 5.8 iterations in the
   // Koyna viscoplastic run).
   double ft = 0.0;
-  const double mu = rankine_1_multiplier(s1, kt0, dt, rate_on_, Ep,
+  const double mu = rankine_1_multiplier(s1, kt0, dt, _rate_on, Ep,
                                          old_rate_multiplier(old, dt), &ft);
   if (!(mu > 0.0) || !std::isfinite(mu))
     return false;
@@ -1979,9 +1979,9 @@ bool HtcConcrete::plane_stress_tension(const State& old, Vector6& de, double dt,
 bool HtcConcrete::admissible(const Vector6& stress, double kappa_c,
                              double kappa_t) const
 {
-  if (p_.mode == Mode::elastic)
+  if (_p.mode == Mode::elastic)
     return true;
-  const double tol_f = p_.tolerance * d_.fc0;
+  const double tol_f = _p.tolerance * _d.fc0;
   double ft, ifc;
   std::array<double, 4> X;
   rest_strengths(kappa_c, kappa_t, ft, ifc, X);
@@ -1993,7 +1993,7 @@ bool HtcConcrete::admissible(const Vector6& stress, double kappa_c,
 double HtcConcrete::admissible_radius(const Vector6& stress, double kappa_c,
                                       double kappa_t) const
 {
-  if (p_.mode == Mode::elastic)
+  if (_p.mode == Mode::elastic)
     return HUGE_VAL;
   // The surfaces admissible() tests.
   double ft, ifc;
@@ -2002,7 +2002,7 @@ double HtcConcrete::admissible_radius(const Vector6& stress, double kappa_c,
   const std::array<double, 3> s = principal_fast(stress);
   std::array<double, 5> phi;
   surfaces_at<double>(s, ft, ifc, X, phi, nullptr);
-  const double f0 = d_.fc0, tol_f = p_.tolerance * f0;
+  const double f0 = _d.fc0, tol_f = _p.tolerance * f0;
   const double I1 = s[0] + s[1] + s[2], m = I1 / 3.0;
   const double J2 = 0.5 * ((s[0] - m) * (s[0] - m) + (s[1] - m) * (s[1] - m) +
                            (s[2] - m) * (s[2] - m));
@@ -2037,22 +2037,22 @@ Matrix6 HtcConcrete::elastic_tangent() const
   for (int i = 0; i < 3; ++i)
   {
     for (int j = 0; j < 3; ++j)
-      D[i * 6 + j] = d_.lambda;
-    D[i * 6 + i] += 2.0 * d_.G;
-    D[(i + 3) * 6 + i + 3] = d_.G;
+      D[i * 6 + j] = _d.lambda;
+    D[i * 6 + i] += 2.0 * _d.G;
+    D[(i + 3) * 6 + i + 3] = _d.G;
   }
   return D;
 }
 
 double HtcConcrete::compressive_strength(double kc, double kcd) const
 {
-  return d_.fc0 * hc(kc) * (rate_on_ ? d_.rate_c(std::max(kcd, 0.0)) : 1.0);
+  return _d.fc0 * hc(kc) * (_rate_on ? _d.rate_c(std::max(kcd, 0.0)) : 1.0);
 }
 
 double HtcConcrete::tensile_strength(double kt, double ktd) const
 {
-  return d_.ft0 * std::exp(-kt / d_.kappa_tu) *
-         (rate_on_ ? d_.rate_t(std::max(ktd, 0.0)) : 1.0);
+  return _d.ft0 * std::exp(-kt / _d.kappa_tu) *
+         (_rate_on ? _d.rate_t(std::max(ktd, 0.0)) : 1.0);
 }
 
 HtcCoefficients HtcConcrete::htc_coefficients(double kc, double kt, double kcd,
@@ -2060,9 +2060,9 @@ HtcCoefficients HtcConcrete::htc_coefficients(double kc, double kt, double kcd,
 {
   const double fc = compressive_strength(kc, kcd);
   const double ft = tensile_strength(kt, ktd);
-  const double ftH = std::clamp((1.0 + p_.htc_tension_offset) * ft,
-                                p_.rho_min * fc, p_.rho_max * fc);
-  return family_.at(ftH / fc);
+  const double ftH = std::clamp((1.0 + _p.htc_tension_offset) * ft,
+                                _p.rho_min * fc, _p.rho_max * fc);
+  return _family.at(ftH / fc);
 }
 
 double HtcConcrete::yield_value(const Vector6& stress, double kc, double kt,
@@ -2074,7 +2074,7 @@ double HtcConcrete::yield_value(const Vector6& stress, double kc, double kt,
   double m = phi[0];
   for (int k = 1; k < 5; ++k)
     m = std::max(m, phi[k]);
-  return m / d_.fc0;
+  return m / _d.fc0;
 }
 
 } // namespace damseis::material

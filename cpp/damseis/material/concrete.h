@@ -159,8 +159,8 @@ public:
                        s.kappa_t_rate);
   }
 
-  const ConcreteParameters& parameters() const { return p_; }
-  const DerivedProperties& derived() const { return d_; }
+  const ConcreteParameters& parameters() const { return _p; }
+  const DerivedProperties& derived() const { return _d; }
   Matrix6 elastic_tangent() const;
   /// The elastic-trial test of integrate(): true if `stress` lies on or
   /// inside every surface for these internal variables at zero rates (a step
@@ -287,18 +287,18 @@ private:
                        const std::array<double, 5>& phi,
                        const std::array<std::array<double, 3>, 5>& n) const;
 
-  ConcreteParameters p_;
-  DerivedProperties d_{};
-  HtcFamily family_;
-  bool rate_on_ = false;
-  bool log_c_ = false, log_t_ = false; ///< log-rate unknowns (power law)
+  ConcreteParameters _p;
+  DerivedProperties _d{};
+  HtcFamily _family;
+  bool _rate_on = false;
+  bool _log_c = false, _log_t = false; ///< log-rate unknowns (power law)
   /// ft, 1 / fc and the HTC coefficients for internal variables kc, kt at
   /// zero rates, as surfaces() computes them (the surfaces of admissible());
   /// those of the untouched point (most points of a dam) made once.
   void rest_strengths(double kc, double kt, double& ft, double& ifc,
                       std::array<double, 4>& X) const;
-  double virgin_ft_ = 0.0, virgin_ifc_ = 0.0; ///< 0: not made yet
-  std::array<double, 4> virgin_htc_{};
+  double _virgin_ft = 0.0, _virgin_ifc = 0.0; ///< 0: not made yet
+  std::array<double, 4> _virgin_htc{};
 };
 
 } // namespace damseis::material

@@ -113,7 +113,7 @@ Ec8Row ec8_row(bool type1, const std::string& ground)
 }
 } // namespace
 
-DesignSpectrum::DesignSpectrum(const DesignSpectrumSettings& s) : s_(s)
+DesignSpectrum::DesignSpectrum(const DesignSpectrumSettings& s) : _s(s)
 {
   const bool table = s.code == SpectrumCode::table;
   if (!table && (!(s.pga > 0) || !std::isfinite(s.pga)))
@@ -127,22 +127,22 @@ DesignSpectrum::DesignSpectrum(const DesignSpectrumSettings& s) : s_(s)
   case SpectrumCode::nb35047_2015:
   {
     const bool dl = s.code == SpectrumCode::dl5073_2000;
-    tg_ = s.tg ? *s.tg
+    _tg = s.tg ? *s.tg
                : (dl ? tg_dl5073(s.site_class)
                      : tg_nb35047(s.site_class, s.tg_map));
-    beta_max_ = s.beta_max ? *s.beta_max : beta_max_of(s.dam);
-    if (!(tg_ > 0.1 && tg_ <= 3.0))
-      bad("Tg = " + number_text(tg_) + " s; expected 0.1 < Tg <= 3");
-    if (!(beta_max_ >= 1.0 && beta_max_ <= 5.0))
-      bad("beta_max = " + number_text(beta_max_) +
+    _beta_max = s.beta_max ? *s.beta_max : beta_max_of(s.dam);
+    if (!(_tg > 0.1 && _tg <= 3.0))
+      bad("Tg = " + number_text(_tg) + " s; expected 0.1 < Tg <= 3");
+    if (!(_beta_max >= 1.0 && _beta_max <= 5.0))
+      bad("beta_max = " + number_text(_beta_max) +
           "; expected 1 <= beta_max <= 5");
-    gamma_ = dl ? 0.9 : 0.6;
+    _gamma = dl ? 0.9 : 0.6;
     // Vertical design acceleration: 2/3 of the horizontal (DL 5073-2000
     // §4.3.3, NB 35047-2015 the same), or the given ratio.
     if (!(s.vertical_ratio > 0 && s.vertical_ratio <= 1.5))
       bad("vertical ratio " + number_text(s.vertical_ratio) +
           "; expected 0 < ratio <= 1.5");
-    a_ = s.vertical ? s.vertical_ratio * s.pga : s.pga;
+    _a = s.vertical ? s.vertical_ratio * s.pga : s.pga;
     break;
   }
   case SpectrumCode::ec8_type1:
@@ -153,27 +153,27 @@ DesignSpectrum::DesignSpectrum(const DesignSpectrumSettings& s) : s_(s)
       bad("damping ratio " + number_text(s.damping) +
           "; expected 0 < damping < 1");
     // eta = sqrt(10 / (5 + xi)) >= 0.55, xi in percent (§3.2.2.2(3)).
-    eta_ = std::max(0.55, std::sqrt(10.0 / (5.0 + 100.0 * s.damping)));
+    _eta = std::max(0.55, std::sqrt(10.0 / (5.0 + 100.0 * s.damping)));
     if (s.vertical)
     {
       // Table 3.4: avg / ag 0.90 (type 1) or 0.45 (type 2); TB 0.05,
       // TC 0.15, TD 1.0 s; plateau 3.0 (§3.2.2.3); no soil factor.
-      a_ = (type1 ? 0.90 : 0.45) * s.pga;
-      soil_ = 1.0;
-      tb_ = 0.05;
-      tg_ = 0.15;
-      td_ = 1.0;
-      plateau_ = 3.0;
+      _a = (type1 ? 0.90 : 0.45) * s.pga;
+      _soil = 1.0;
+      _tb = 0.05;
+      _tg = 0.15;
+      _td = 1.0;
+      _plateau = 3.0;
     }
     else
     {
       const Ec8Row r = ec8_row(type1, s.site_class);
-      a_ = s.pga;
-      soil_ = r.s;
-      tb_ = r.tb;
-      tg_ = r.tc;
-      td_ = r.td;
-      plateau_ = 2.5;
+      _a = s.pga;
+      _soil = r.s;
+      _tb = r.tb;
+      _tg = r.tc;
+      _td = r.td;
+      _plateau = 2.5;
     }
     break;
   }
@@ -213,7 +213,7 @@ double DesignSpectrum::operator()(double period) const
     throw std::invalid_argument("period " + number_text(period) +
                                 " s; expected >= 0");
   const double t = period;
-  switch (s_.code)
+  switch (_s.code)
   {
   case SpectrumCode::dl5073_2000:
   case SpectrumCode::nb35047_2015:
@@ -224,31 +224,31 @@ double DesignSpectrum::operator()(double period) const
     // shape with gamma = 0.6).
     double beta = 0;
     if (t <= 0.1)
-      beta = 1.0 + (beta_max_ - 1.0) * t / 0.1;
-    else if (t <= tg_)
-      beta = beta_max_;
+      beta = 1.0 + (_beta_max - 1.0) * t / 0.1;
+    else if (t <= _tg)
+      beta = _beta_max;
     else
-      beta = std::max(beta_max_ * std::pow(tg_ / t, gamma_), 0.2 * beta_max_);
-    return a_ * beta;
+      beta = std::max(_beta_max * std::pow(_tg / t, _gamma), 0.2 * _beta_max);
+    return _a * beta;
   }
   case SpectrumCode::ec8_type1:
   case SpectrumCode::ec8_type2:
   {
     // EN 1998-1 eq. (3.2)-(3.5) and (3.8)-(3.11).
-    const double top = a_ * soil_ * eta_ * plateau_;
-    if (t <= tb_)
-      return a_ * soil_ * (1.0 + t / tb_ * (eta_ * plateau_ - 1.0));
-    if (t <= tg_)
+    const double top = _a * _soil * _eta * _plateau;
+    if (t <= _tb)
+      return _a * _soil * (1.0 + t / _tb * (_eta * _plateau - 1.0));
+    if (t <= _tg)
       return top;
-    if (t <= td_)
-      return top * tg_ / t;
-    return top * tg_ * td_ / (t * t);
+    if (t <= _td)
+      return top * _tg / t;
+    return top * _tg * _td / (t * t);
   }
   case SpectrumCode::table:
   default:
   {
-    const auto& p = s_.table_period;
-    const auto& sa = s_.table_sa;
+    const auto& p = _s.table_period;
+    const auto& sa = _s.table_sa;
     if (t < p.front() - 1e-12 || t > p.back() + 1e-12)
       throw std::out_of_range(
           "period " + number_text(t) + " s is outside the spectrum table (" +
@@ -258,50 +258,50 @@ double DesignSpectrum::operator()(double period) const
         static_cast<std::size_t>(it - p.begin()), 1, p.size() - 1);
     const double w = (t - p[i - 1]) / (p[i] - p[i - 1]);
     return ((1 - w) * sa[i - 1] + w * sa[i]) *
-           (s_.vertical ? s_.vertical_ratio : 1.0);
+           (_s.vertical ? _s.vertical_ratio : 1.0);
   }
   }
 }
 
 double DesignSpectrum::min_period() const
 {
-  return s_.code == SpectrumCode::table ? s_.table_period.front() : 0.0;
+  return _s.code == SpectrumCode::table ? _s.table_period.front() : 0.0;
 }
 
 double DesignSpectrum::max_period() const
 {
-  return s_.code == SpectrumCode::table ? s_.table_period.back() : HUGE_VAL;
+  return _s.code == SpectrumCode::table ? _s.table_period.back() : HUGE_VAL;
 }
 
 double DesignSpectrum::pga() const
 {
-  return s_.code == SpectrumCode::table && s_.pga > 0
-             ? s_.pga * (s_.vertical ? s_.vertical_ratio : 1.0)
+  return _s.code == SpectrumCode::table && _s.pga > 0
+             ? _s.pga * (_s.vertical ? _s.vertical_ratio : 1.0)
              : (*this)(0.0);
 }
 
 std::string DesignSpectrum::describe() const
 {
   std::ostringstream out;
-  out << std::fixed << std::setprecision(2) << to_string(s_.code);
-  switch (s_.code)
+  out << std::fixed << std::setprecision(2) << to_string(_s.code);
+  switch (_s.code)
   {
   case SpectrumCode::dl5073_2000:
   case SpectrumCode::nb35047_2015:
-    out << ", " << to_string(s_.dam) << " dam, site " << s_.site_class
-        << " (Tg " << tg_ << " s, beta_max " << beta_max_ << ")";
+    out << ", " << to_string(_s.dam) << " dam, site " << _s.site_class
+        << " (Tg " << _tg << " s, beta_max " << _beta_max << ")";
     break;
   case SpectrumCode::ec8_type1:
   case SpectrumCode::ec8_type2:
-    out << ", ground " << s_.site_class << ", " << 100 * s_.damping
+    out << ", ground " << _s.site_class << ", " << 100 * _s.damping
         << "% damping";
     break;
   case SpectrumCode::table:
-    out << " of " << s_.table_period.size() << " points";
+    out << " of " << _s.table_period.size() << " points";
     break;
   }
   out << ", a = " << pga() << " m/s2";
-  out << (s_.vertical ? ", vertical" : ", horizontal");
+  out << (_s.vertical ? ", vertical" : ", horizontal");
   return out.str();
 }
 

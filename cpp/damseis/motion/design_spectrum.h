@@ -72,9 +72,9 @@ public:
   double pga() const;
   /// The characteristic period Tg (Chinese codes) or TC (Eurocode 8), s;
   /// 0 for a table.
-  double corner_period() const { return tg_; }
+  double corner_period() const { return _tg; }
   /// beta_max of the Chinese codes (0 otherwise).
-  double beta_max() const { return beta_max_; }
+  double beta_max() const { return _beta_max; }
   /// Periods where the spectrum is defined: [0, inf) for the codes, the
   /// table's range for a table.
   double min_period() const;
@@ -84,10 +84,10 @@ public:
   std::string describe() const;
 
 private:
-  DesignSpectrumSettings s_;
-  double tg_ = 0, beta_max_ = 0, gamma_ = 0, a_ = 0;
+  DesignSpectrumSettings _s;
+  double _tg = 0, _beta_max = 0, _gamma = 0, _a = 0;
   // Eurocode 8: soil factor, corner periods, plateau factor, eta.
-  double soil_ = 1, tb_ = 0, td_ = 0, plateau_ = 2.5, eta_ = 1;
+  double _soil = 1, _tb = 0, _td = 0, _plateau = 2.5, _eta = 1;
 };
 
 /// Names used in case files and messages.

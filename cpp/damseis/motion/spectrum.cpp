@@ -23,8 +23,8 @@ Sdof::Sdof(double period, double damping, double dt)
   // strong-motion earthquake records", BSSA 59(2): the exact solution over
   // a step of u'' + 2 zeta w u' + w^2 u = -a(t), a linear in the step.
   const double w = 2.0 * std::numbers::pi / period, z = damping;
-  w_ = w;
-  zeta_ = z;
+  _w = w;
+  _zeta = z;
   const double s = std::sqrt(1.0 - z * z), wd = w * s;
   const double e = std::exp(-z * w * dt);
   const double sn = std::sin(wd * dt), cs = std::cos(wd * dt);
@@ -76,26 +76,26 @@ double Sdof::peak_displacement(std::span<const double> a, int substeps) const
   // After the record the input is zero: free vibration from the last
   // state (records end at rest; a nonzero last sample is taken to drop to
   // zero, as a step).
-  const double period = 2.0 * std::numbers::pi / w_;
-  return std::max(peak, free_vibration_peak(u, v, period, zeta_));
+  const double period = 2.0 * std::numbers::pi / _w;
+  return std::max(peak, free_vibration_peak(u, v, period, _zeta));
 }
 
 SdofBank::SdofBank(std::span<const double> periods, double damping, double dt,
                    int substeps)
-    : substeps_(substeps)
+    : _substeps(substeps)
 {
   require_argument(substeps >= 1, "substeps must be >= 1");
   for (double period : periods)
   {
     const Sdof s(period, damping, dt / substeps);
-    a11_.push_back(s.a11);
-    a12_.push_back(s.a12);
-    a21_.push_back(s.a21);
-    a22_.push_back(s.a22);
-    b11_.push_back(s.b11);
-    b12_.push_back(s.b12);
-    b21_.push_back(s.b21);
-    b22_.push_back(s.b22);
+    _a11.push_back(s.a11);
+    _a12.push_back(s.a12);
+    _a21.push_back(s.a21);
+    _a22.push_back(s.a22);
+    _b11.push_back(s.b11);
+    _b12.push_back(s.b12);
+    _b21.push_back(s.b21);
+    _b22.push_back(s.b22);
   }
 }
 
@@ -113,17 +113,17 @@ SdofBank::Peaks SdofBank::peaks(std::span<const double> a) const
   long index = 0;
   for (std::size_t k = 0; k + 1 < a.size(); ++k)
   {
-    const double slope = (a[k + 1] - a[k]) / substeps_;
+    const double slope = (a[k + 1] - a[k]) / _substeps;
     double a0 = a[k];
-    for (int j = 1; j <= substeps_; ++j)
+    for (int j = 1; j <= _substeps; ++j)
     {
-      const double a1 = j == substeps_ ? a[k + 1] : a[k] + slope * j;
+      const double a1 = j == _substeps ? a[k + 1] : a[k] + slope * j;
       ++index;
       for (std::size_t i = 0; i < m; ++i)
       {
         const double un =
-            a11_[i] * u[i] + a12_[i] * v[i] + b11_[i] * a0 + b12_[i] * a1;
-        v[i] = a21_[i] * u[i] + a22_[i] * v[i] + b21_[i] * a0 + b22_[i] * a1;
+            _a11[i] * u[i] + _a12[i] * v[i] + _b11[i] * a0 + _b12[i] * a1;
+        v[i] = _a21[i] * u[i] + _a22[i] * v[i] + _b21[i] * a0 + _b22[i] * a1;
         u[i] = un;
         if (std::abs(un) > p.peak[i])
         {
@@ -157,8 +157,8 @@ void SdofBank::run_to(const double* x, long k0, long k_last,
   for (std::size_t r = 0; r < n; ++r)
   {
     const std::size_t o = which[order[r]];
-    const double values[8] = {a11_[o], a12_[o], a21_[o], a22_[o],
-                              b11_[o], b12_[o], b21_[o], b22_[o]};
+    const double values[8] = {_a11[o], _a12[o], _a21[o], _a22[o],
+                              _b11[o], _b12[o], _b21[o], _b22[o]};
     for (int q = 0; q < 8; ++q)
       c[static_cast<std::size_t>(q) * n + r] = values[q];
     stops[r] = stop[order[r]];
@@ -167,7 +167,7 @@ void SdofBank::run_to(const double* x, long k0, long k_last,
                *d11 = c22 + n, *d12 = d11 + n, *d21 = d12 + n, *d22 = d21 + n;
   double* u_ = us.data();
   double* v_ = vs.data();
-  long index = k0 * substeps_;
+  long index = k0 * _substeps;
   std::vector<long> reached_sorted(n, index);
   std::size_t first = 0;
   auto retire = [&]
@@ -178,11 +178,11 @@ void SdofBank::run_to(const double* x, long k0, long k_last,
   retire();
   for (long k = k0; k < k_last && first < n; ++k)
   {
-    const double slope = (x[k + 1] - x[k]) / substeps_;
+    const double slope = (x[k + 1] - x[k]) / _substeps;
     double a0 = x[k];
-    for (int j = 1; j <= substeps_ && first < n; ++j)
+    for (int j = 1; j <= _substeps && first < n; ++j)
     {
-      const double a1 = j == substeps_ ? x[k + 1] : x[k] + slope * j;
+      const double a1 = j == _substeps ? x[k + 1] : x[k] + slope * j;
       for (std::size_t i = first; i < n; ++i)
       {
         const double un =

@@ -31,7 +31,7 @@ public:
   double a11, a12, a21, a22, b11, b12, b21, b22;
 
 private:
-  double w_, zeta_;
+  double _w, _zeta;
 };
 
 /// Oscillators of one damping ratio and one sub-step count, stepped
@@ -45,8 +45,8 @@ public:
   /// `substeps` steps of the same linear input.
   SdofBank(std::span<const double> periods, double damping, double dt,
            int substeps);
-  std::size_t size() const { return a11_.size(); }
-  int substeps() const { return substeps_; }
+  std::size_t size() const { return _a11.size(); }
+  int substeps() const { return _substeps; }
 
   /// From rest over the whole record `a`: for each oscillator the largest
   /// |u| (peak), the substep index where it occurs (at, counted from sample
@@ -67,8 +67,8 @@ public:
               std::span<long> reached) const;
 
 private:
-  int substeps_;
-  std::vector<double> a11_, a12_, a21_, a22_, b11_, b12_, b21_, b22_;
+  int _substeps;
+  std::vector<double> _a11, _a12, _a21, _a22, _b11, _b12, _b21, _b22;
 };
 
 /// Oscillators of any periods (> 0) in banks of equal sub-step counts
