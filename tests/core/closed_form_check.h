@@ -3,7 +3,7 @@
 /// test_material_random.cpp).
 #pragma once
 
-#include "damseis/material/concrete.h"
+#include <damseis/material/concrete.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 /// Tests of damseis/case: schema, case files, --set overrides, command line.
-#include "damseis/input/case.h"
-#include "damseis/input/command_line.h"
+#include <damseis/input/case.h>
+#include <damseis/input/command_line.h>
 
 #include <atomic>
 #include <fstream>

@@ -1,5 +1,5 @@
 /// Uniaxial curves (peak, crack-band energy) and the biaxial envelope.
-#include "damseis/material/path.h"
+#include <damseis/material/path.h>
 
 #include <gtest/gtest.h>
 

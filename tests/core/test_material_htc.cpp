@@ -1,5 +1,5 @@
 /// HTC surface: calibration, classic preset, paper form (eq. 4).
-#include "damseis/material/concrete.h"
+#include <damseis/material/concrete.h>
 
 #include <Eigen/Dense>
 #include <algorithm>

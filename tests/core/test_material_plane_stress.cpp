@@ -2,8 +2,8 @@
 /// mixed-control path driver, and on two points traced from the
 /// viscoplastic Koyna run where sigma_33(eps_33) is not monotone.
 #include "closed_form_check.h"
-#include "damseis/material/path.h"
-#include "damseis/material/plane_stress.h"
+#include <damseis/material/path.h>
+#include <damseis/material/plane_stress.h>
 
 #include <algorithm>
 #include <cmath>

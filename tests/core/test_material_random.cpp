@@ -1,7 +1,7 @@
 /// Robustness of the local Newton on random states, and the reductions
 /// (elastic = Hooke, s = 0 = rate-independent).
 #include "closed_form_check.h"
-#include "damseis/material/concrete.h"
+#include <damseis/material/concrete.h>
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>

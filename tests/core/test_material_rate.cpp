@@ -1,6 +1,6 @@
 /// Strain-rate effect: single-point constant-rate uniaxial simulations
 /// against the CEB-FIP MC90 dynamic increase factors.
-#include "damseis/material/path.h"
+#include <damseis/material/path.h>
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 /// Consistent tangent against central differences of the return map.
-#include "damseis/material/concrete.h"
+#include <damseis/material/concrete.h>
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 /// Tests for damseis::motion record reading, resampling, scaling and
 /// baseline correction.
-#include "damseis/motion/record.h"
+#include <damseis/motion/record.h>
 
 #include <gtest/gtest.h>
 

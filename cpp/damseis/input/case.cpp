@@ -1,4 +1,4 @@
-#include "damseis/input/case.h"
+#include "case.h"
 
 #include <algorithm>
 #include <cctype>

@@ -1,4 +1,4 @@
-#include "damseis/input/command_line.h"
+#include "command_line.h"
 
 #include <CLI/CLI.hpp>
 #include <algorithm>

@@ -3,7 +3,7 @@
 ///   <demo> [--case FILE] [--out DIR] [--set key=value ...] [--help]
 #pragma once
 
-#include "damseis/input/case.h"
+#include "case.h"
 
 #include <filesystem>
 #include <optional>

@@ -1,4 +1,4 @@
-#include "damseis/material/concrete.h"
+#include "concrete.h"
 
 #include <Eigen/Dense>
 #include <algorithm>

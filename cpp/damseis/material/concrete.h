@@ -10,8 +10,8 @@
 /// tangent is d(stress)/d(engineering strain), 6x6 row-major.
 #pragma once
 
-#include "damseis/material/htc.h"
-#include "damseis/material/rate.h"
+#include "htc.h"
+#include "rate.h"
 
 #include <array>
 #include <string>

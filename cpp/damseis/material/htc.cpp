@@ -1,4 +1,4 @@
-#include "damseis/material/htc.h"
+#include "htc.h"
 
 #include <Eigen/Dense>
 #include <algorithm>

@@ -14,7 +14,7 @@
 /// (11, 22, 33, 12, 23, 13).
 #pragma once
 
-#include "damseis/material/dual.h"
+#include "dual.h"
 
 #include <array>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "damseis/material/material_point_case.h"
+#include "material_point_case.h"
 
 #include <cmath>
 #include <damseis/results/output_folder.h>

@@ -3,8 +3,8 @@
 /// driver ([path]); used by demos/material_point.
 #pragma once
 
-#include "damseis/input/case.h"
-#include "damseis/material/path.h"
+#include "path.h"
+#include <damseis/input/case.h>
 
 #include <string>
 #include <vector>

@@ -1,4 +1,4 @@
-#include "damseis/material/path.h"
+#include "path.h"
 
 #include <Eigen/Dense>
 #include <cmath>

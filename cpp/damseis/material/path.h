@@ -7,7 +7,7 @@
 /// sub-steps).
 #pragma once
 
-#include "damseis/material/concrete.h"
+#include "concrete.h"
 
 #include <iosfwd>
 #include <string>

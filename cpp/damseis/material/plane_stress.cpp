@@ -1,4 +1,4 @@
-#include "damseis/material/plane_stress.h"
+#include "plane_stress.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 /// HtcConcrete::integrate (the 3D return map).
 #pragma once
 
-#include "damseis/material/concrete.h"
+#include "concrete.h"
 
 #include <cstdint>
 

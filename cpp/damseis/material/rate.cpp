@@ -1,4 +1,4 @@
-#include "damseis/material/rate.h"
+#include "rate.h"
 
 namespace damseis::material
 {

@@ -21,7 +21,7 @@
 /// peak of a uniaxial test (see concrete.h).
 #pragma once
 
-#include "damseis/material/dual.h"
+#include "dual.h"
 
 #include <cmath>
 

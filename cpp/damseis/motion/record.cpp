@@ -1,6 +1,6 @@
 /// @file record.cpp
 /// Ground-motion record reading, resampling, scaling and baseline correction.
-#include "damseis/motion/record.h"
+#include "record.h"
 
 #include <algorithm>
 #include <cctype>
