@@ -4,7 +4,7 @@
 
 #include <string>
 
-namespace damseis::tags
+namespace damseis::geometry::tags
 {
 /// Cell (region) tags.
 enum Region : int
@@ -117,4 +117,10 @@ inline std::string boundary_name(int tag)
     return "boundary_" + std::to_string(tag);
   }
 }
-} // namespace damseis::tags
+} // namespace damseis::geometry::tags
+
+namespace damseis
+{
+/// The tags are used everywhere: damseis::tags names them for short.
+namespace tags = geometry::tags;
+} // namespace damseis
