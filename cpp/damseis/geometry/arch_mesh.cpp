@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "gmsh_session.h"
+#include "root_status.h"
 #include <dolfinx/common/IndexMap.h>
 #include <dolfinx/fem/CoordinateElement.h>
 #include <dolfinx/graph/AdjacencyList.h>
@@ -514,25 +515,6 @@ MeshArrays build_on_root(const ArchDamGeometry& g, bool verbose)
   return m;
 }
 
-/// Broadcasts a success flag and an error message from rank 0; throws on
-/// every rank if rank 0 failed (std::invalid_argument if `invalid`).
-void check_root_status(MPI_Comm comm, bool ok, bool invalid,
-                       const std::string& message)
-{
-  int flag[2] = {ok ? 1 : 0, invalid ? 1 : 0};
-  MPI_Bcast(flag, 2, MPI_INT, 0, comm);
-  if (flag[0])
-    return;
-  int len = static_cast<int>(message.size());
-  MPI_Bcast(&len, 1, MPI_INT, 0, comm);
-  std::string msg = message;
-  msg.resize(len);
-  MPI_Bcast(msg.data(), len, MPI_CHAR, 0, comm);
-  if (flag[1])
-    throw std::invalid_argument(msg);
-  throw std::runtime_error(msg);
-}
-
 } // namespace
 
 //-----------------------------------------------------------------------------
@@ -570,7 +552,7 @@ ArchModel build_arch_dam(MPI_Comm comm, const ArchDamDefinition& def,
       message = "build_arch_dam: unknown error in gmsh";
     }
   }
-  check_root_status(comm, ok, invalid, message);
+  check_root_status(comm, ok, message, invalid);
 
   const std::size_t num_nodes = d.x.size() / 3;
   ArchModel out;

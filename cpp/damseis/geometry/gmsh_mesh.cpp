@@ -1,6 +1,7 @@
 // Conversion of a gmsh model (held by rank 0) into a distributed DOLFINx
 // mesh with region (cell) and boundary (facet) tags.
 #include "gmsh_mesh.h"
+#include "root_status.h"
 
 #include <algorithm>
 #include <cmath>
@@ -163,22 +164,6 @@ GmshData read_gmsh(int tdim)
         "groups defined?)");
   }
   return d;
-}
-
-/// Broadcasts a success flag and an error message from rank 0; throws
-/// std::runtime_error on every rank if rank 0 failed.
-void check_root_status(MPI_Comm comm, bool ok, const std::string& message)
-{
-  int flag = ok ? 1 : 0;
-  MPI_Bcast(&flag, 1, MPI_INT, 0, comm);
-  if (flag)
-    return;
-  int len = static_cast<int>(message.size());
-  MPI_Bcast(&len, 1, MPI_INT, 0, comm);
-  std::string msg = message;
-  msg.resize(len);
-  MPI_Bcast(msg.data(), len, MPI_CHAR, 0, comm);
-  throw std::runtime_error(msg);
 }
 
 /// Builds MeshTags of dimension `dim` from entities given by global

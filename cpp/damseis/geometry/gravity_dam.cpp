@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "gmsh_session.h"
+#include "root_status.h"
 #include <gmsh.h>
 
 namespace damseis::geometry
@@ -281,7 +282,7 @@ Model build_gravity_dam(MPI_Comm comm, const GravityDamSection& s, bool verbose,
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   std::optional<GmshSession> session;
-  int ok = 1;
+  bool ok = true;
   std::string message;
   if (rank == 0)
   {
@@ -294,24 +295,16 @@ Model build_gravity_dam(MPI_Comm comm, const GravityDamSection& s, bool verbose,
     }
     catch (const std::exception& e)
     {
-      ok = 0;
-      message = e.what();
+      ok = false;
+      message = std::string("build_gravity_dam: gmsh failed: ") + e.what();
     }
     catch (...)
     {
-      ok = 0;
-      message = "unknown gmsh error";
+      ok = false;
+      message = "build_gravity_dam: gmsh failed: unknown gmsh error";
     }
   }
-  MPI_Bcast(&ok, 1, MPI_INT, 0, comm);
-  if (!ok)
-  {
-    int len = static_cast<int>(message.size());
-    MPI_Bcast(&len, 1, MPI_INT, 0, comm);
-    message.resize(len);
-    MPI_Bcast(message.data(), len, MPI_CHAR, 0, comm);
-    throw std::runtime_error("build_gravity_dam: gmsh failed: " + message);
-  }
+  check_root_status(comm, ok, message);
   // gmsh stays open on rank 0 until the conversion is done
   return model_from_gmsh(comm, 2);
 }

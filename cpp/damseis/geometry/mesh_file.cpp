@@ -1,5 +1,6 @@
 #include "mesh_file.h"
 #include "gmsh_session.h"
+#include "root_status.h"
 #include <gmsh.h>
 #include <sstream>
 #include <stdexcept>
@@ -65,13 +66,6 @@ open_file(const std::filesystem::path& file)
   return groups;
 }
 
-void broadcast_text(MPI_Comm comm, std::string& text)
-{
-  int length = static_cast<int>(text.size());
-  MPI_Bcast(&length, 1, MPI_INT, 0, comm);
-  text.resize(static_cast<std::size_t>(length));
-  MPI_Bcast(text.data(), length, MPI_CHAR, 0, comm);
-}
 } // namespace
 
 MeshFile read_mesh_file(MPI_Comm comm, const std::filesystem::path& file)
@@ -103,10 +97,8 @@ MeshFile read_mesh_file(MPI_Comm comm, const std::filesystem::path& file)
       error = e.what();
     }
   }
-  broadcast_text(comm, error);
-  if (!error.empty())
-    throw std::runtime_error(error);
-  broadcast_text(comm, groups);
+  check_root_status(comm, error.empty(), error);
+  groups = broadcast_from_root(comm, groups);
   MPI_Bcast(&out.tdim, 1, MPI_INT, 0, comm);
   if (rank != 0)
     out.groups = parse_group_lines(groups);

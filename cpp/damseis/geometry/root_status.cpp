@@ -1,0 +1,27 @@
+#include "root_status.h"
+#include <stdexcept>
+
+namespace damseis::geometry
+{
+std::string broadcast_from_root(MPI_Comm comm, std::string text)
+{
+  int length = static_cast<int>(text.size());
+  MPI_Bcast(&length, 1, MPI_INT, 0, comm);
+  text.resize(static_cast<std::size_t>(length));
+  MPI_Bcast(text.data(), length, MPI_CHAR, 0, comm);
+  return text;
+}
+
+void check_root_status(MPI_Comm comm, bool ok, const std::string& message,
+                       bool invalid)
+{
+  int flag[2] = {ok ? 1 : 0, invalid ? 1 : 0};
+  MPI_Bcast(flag, 2, MPI_INT, 0, comm);
+  if (flag[0])
+    return;
+  const std::string text = broadcast_from_root(comm, message);
+  if (flag[1])
+    throw std::invalid_argument(text);
+  throw std::runtime_error(text);
+}
+} // namespace damseis::geometry
