@@ -9,7 +9,6 @@
 #include <memory>
 #include <numbers>
 #include <random>
-#include <sstream>
 #include <stdexcept>
 
 namespace damseis::motion
@@ -307,18 +306,14 @@ void wavelet_adjust(std::vector<double>& a, double dt,
       for (std::size_t q = 0; q < which.size(); ++q)
       {
         const std::size_t j = osc.members[b][which[q]];
-        double uj = u[q];
+        // Free vibration from the end of the wavelet to the peak time.
+        const double tau =
+            dt * static_cast<double>(stop[j] - reached[q]) / substeps[j];
+        const double uj =
+            reached[q] < stop[j]
+                ? free_vibration_displacement(u[q], v[q], periods[j], beta, tau)
+                : u[q];
         const double w = 2.0 * pi / periods[j];
-        if (reached[q] < stop[j])
-        {
-          // Free vibration from the end of the wavelet to the peak time.
-          const double z = beta, wd = w * std::sqrt(1 - z * z);
-          const double tau =
-              dt * static_cast<double>(stop[j] - reached[q]) / substeps[j];
-          const double e = std::exp(-z * w * tau);
-          uj = e * (u[q] * std::cos(wd * tau) +
-                    (v[q] + z * w * u[q]) / wd * std::sin(wd * tau));
-        }
         c(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(i)) =
             -w * w * uj;
       }
@@ -513,7 +508,6 @@ ArtificialComponent generate_component(const DesignSpectrum& target,
   c.worst_ratio = best.ratio;
   c.worst_period = best.period;
   c.accepted = best.worst <= s.tolerance;
-  c.spectrum = response_spectrum(c.acceleration, s.dt, control, s.damping);
   c.measures = measures(c.acceleration, s.dt);
   return c;
 }
@@ -553,11 +547,9 @@ ArtificialMotion generate_motion(const std::vector<DesignSpectrum>& targets,
                       static_cast<std::uint32_t>(s.seed >> 32),
                       static_cast<std::uint32_t>(component),
                       static_cast<std::uint32_t>(attempt)};
-    std::uint64_t out[1];
     std::uint32_t words[2];
     seq.generate(words, words + 2);
-    out[0] = (static_cast<std::uint64_t>(words[0]) << 32) | words[1];
-    return out[0];
+    return (static_cast<std::uint64_t>(words[0]) << 32) | words[1];
   };
   for (std::size_t i = 0; i < targets.size(); ++i)
   {

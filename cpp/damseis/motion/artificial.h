@@ -62,7 +62,6 @@ struct ArtificialSettings
 struct ArtificialComponent
 {
   std::vector<double> acceleration; ///< m/s2 at t_k = k dt
-  Spectrum spectrum;                ///< at the control periods
   std::vector<double> target;       ///< target Sa at the control periods
   double worst_ratio = 0;           ///< Sa / target farthest from 1
   double worst_period = 0;          ///< where, s

@@ -7,7 +7,6 @@
 #include <complex>
 #include <fftw3.h>
 #include <memory>
-#include <sstream>
 #include <stdexcept>
 
 namespace damseis::motion
@@ -98,9 +97,9 @@ void end_at_rest(std::vector<double>& a, double dt,
   if (n < 3)
     return;
   // End velocity and displacement are linear in the record: those of a,
-  // of shape and of shape * t / t_end.
+  // of shape and of shape * t / t_end (g1).
   const double tend = dt * static_cast<double>(n - 1);
-  std::vector<double> g0(shape), g1(n);
+  std::vector<double> g1(n);
   for (std::size_t k = 0; k < n; ++k)
     g1[k] = shape[k] * dt * static_cast<double>(k) / tend;
   auto ends = [&](const std::vector<double>& x)
@@ -110,7 +109,7 @@ void end_at_rest(std::vector<double>& a, double dt,
     return Eigen::Vector2d(v.back(), d.back());
   };
   Eigen::Matrix2d m;
-  m.col(0) = ends(g0);
+  m.col(0) = ends(shape);
   m.col(1) = ends(g1);
   const Eigen::FullPivLU<Eigen::Matrix2d> lu(m);
   if (!lu.isInvertible())
@@ -118,7 +117,7 @@ void end_at_rest(std::vector<double>& a, double dt,
                                 "motion to rest");
   const Eigen::Vector2d c = lu.solve(ends(a));
   for (std::size_t k = 0; k < n; ++k)
-    a[k] -= c(0) * g0[k] + c(1) * g1[k];
+    a[k] -= c(0) * shape[k] + c(1) * g1[k];
 }
 
 void butterworth_bandpass(std::vector<double>& a, double dt, double f_low,

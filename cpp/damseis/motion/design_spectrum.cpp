@@ -16,6 +16,12 @@ namespace
   throw std::invalid_argument(what);
 }
 
+void check_vertical_ratio(double ratio)
+{
+  if (!(ratio > 0 && ratio <= 1.5))
+    bad("vertical ratio " + number_text(ratio) + "; expected 0 < ratio <= 1.5");
+}
+
 // beta_max by structure type: DL 5073-2000 Table 4.3.4 and NB 35047-2015
 // (the same values). Gravity 2.0 and arch 2.5 are confirmed by worked
 // solutions quoting DL 5073 Table 4.3.4; 2.25 and 1.6 by an independent
@@ -139,9 +145,7 @@ DesignSpectrum::DesignSpectrum(const DesignSpectrumSettings& s) : _s(s)
     _gamma = dl ? 0.9 : 0.6;
     // Vertical design acceleration: 2/3 of the horizontal (DL 5073-2000
     // §4.3.3, NB 35047-2015 the same), or the given ratio.
-    if (!(s.vertical_ratio > 0 && s.vertical_ratio <= 1.5))
-      bad("vertical ratio " + number_text(s.vertical_ratio) +
-          "; expected 0 < ratio <= 1.5");
+    check_vertical_ratio(s.vertical_ratio);
     _a = s.vertical ? s.vertical_ratio * s.pga : s.pga;
     break;
   }
@@ -179,9 +183,7 @@ DesignSpectrum::DesignSpectrum(const DesignSpectrumSettings& s) : _s(s)
   }
   case SpectrumCode::table:
   {
-    if (!(s.vertical_ratio > 0 && s.vertical_ratio <= 1.5))
-      bad("vertical ratio " + number_text(s.vertical_ratio) +
-          "; expected 0 < ratio <= 1.5");
+    check_vertical_ratio(s.vertical_ratio);
     const auto& t = s.table_period;
     const auto& sa = s.table_sa;
     if (t.size() < 2 || t.size() != sa.size())
@@ -201,6 +203,13 @@ DesignSpectrum::DesignSpectrum(const DesignSpectrumSettings& s) : _s(s)
       if (!(sa[i] > 0) || !std::isfinite(sa[i]))
         bad("spectrum table value " + std::to_string(i + 1) + " = " +
             number_text(sa[i]) + " m/s2; expected > 0");
+    }
+    // A vertical target is the table scaled by the ratio, once.
+    if (s.vertical)
+    {
+      for (double& v : _s.table_sa)
+        v *= s.vertical_ratio;
+      _s.pga *= s.vertical_ratio;
     }
     break;
   }
@@ -257,8 +266,7 @@ double DesignSpectrum::operator()(double period) const
     const std::size_t i = std::clamp<std::size_t>(
         static_cast<std::size_t>(it - p.begin()), 1, p.size() - 1);
     const double w = (t - p[i - 1]) / (p[i] - p[i - 1]);
-    return ((1 - w) * sa[i - 1] + w * sa[i]) *
-           (_s.vertical ? _s.vertical_ratio : 1.0);
+    return (1 - w) * sa[i - 1] + w * sa[i];
   }
   }
 }
@@ -275,9 +283,7 @@ double DesignSpectrum::max_period() const
 
 double DesignSpectrum::pga() const
 {
-  return _s.code == SpectrumCode::table && _s.pga > 0
-             ? _s.pga * (_s.vertical ? _s.vertical_ratio : 1.0)
-             : (*this)(0.0);
+  return _s.code == SpectrumCode::table && _s.pga > 0 ? _s.pga : (*this)(0.0);
 }
 
 std::string DesignSpectrum::describe() const

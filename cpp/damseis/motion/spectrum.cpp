@@ -5,7 +5,6 @@
 #include <cmath>
 #include <map>
 #include <numbers>
-#include <sstream>
 #include <stdexcept>
 
 namespace damseis::motion
@@ -23,8 +22,6 @@ Sdof::Sdof(double period, double damping, double dt)
   // strong-motion earthquake records", BSSA 59(2): the exact solution over
   // a step of u'' + 2 zeta w u' + w^2 u = -a(t), a linear in the step.
   const double w = 2.0 * std::numbers::pi / period, z = damping;
-  _w = w;
-  _zeta = z;
   const double s = std::sqrt(1.0 - z * z), wd = w * s;
   const double e = std::exp(-z * w * dt);
   const double sn = std::sin(wd * dt), cs = std::cos(wd * dt);
@@ -54,30 +51,6 @@ void Sdof::respond(std::span<const double> a, std::vector<double>& u,
     u[k + 1] = a11 * u[k] + a12 * v[k] + b11 * a[k] + b12 * a[k + 1];
     v[k + 1] = a21 * u[k] + a22 * v[k] + b21 * a[k] + b22 * a[k + 1];
   }
-}
-
-double Sdof::peak_displacement(std::span<const double> a, int substeps) const
-{
-  double u = 0, v = 0, peak = 0;
-  for (std::size_t k = 0; k + 1 < a.size(); ++k)
-  {
-    const double slope = (a[k + 1] - a[k]) / substeps;
-    double a0 = a[k];
-    for (int j = 1; j <= substeps; ++j)
-    {
-      const double a1 = j == substeps ? a[k + 1] : a[k] + slope * j;
-      const double un = a11 * u + a12 * v + b11 * a0 + b12 * a1;
-      v = a21 * u + a22 * v + b21 * a0 + b22 * a1;
-      u = un;
-      peak = std::max(peak, std::abs(u));
-      a0 = a1;
-    }
-  }
-  // After the record the input is zero: free vibration from the last
-  // state (records end at rest; a nonzero last sample is taken to drop to
-  // zero, as a step).
-  const double period = 2.0 * std::numbers::pi / _w;
-  return std::max(peak, free_vibration_peak(u, v, period, _zeta));
 }
 
 SdofBank::SdofBank(std::span<const double> periods, double damping, double dt,
@@ -231,21 +204,28 @@ int substeps_for(double period, double dt, int samples_per_period)
   return std::max(1, static_cast<int>(wanted));
 }
 
+double free_vibration_displacement(double u0, double v0, double period,
+                                   double damping, double t)
+{
+  // u(t) = e^{-z w t} (u0 cos wd t + B sin wd t), B = (v0 + z w u0) / wd.
+  const double w = 2.0 * std::numbers::pi / period, z = damping;
+  const double wd = w * std::sqrt(1.0 - z * z);
+  return std::exp(-z * w * t) *
+         (u0 * std::cos(wd * t) + (v0 + z * w * u0) / wd * std::sin(wd * t));
+}
+
 double free_vibration_peak(double u0, double v0, double period, double damping)
 {
   const double w = 2.0 * std::numbers::pi / period, z = damping;
   const double s = std::sqrt(1.0 - z * z), wd = w * s;
-  // u(t) = e^{-z w t} (u0 cos wd t + B sin wd t), B = (v0 + z w u0) / wd;
-  // v(t) = e^{-z w t} (v0 cos wd t - (w u0 + z v0) / s sin wd t).
-  const double b = (v0 + z * w * u0) / wd;
+  // v(t) = e^{-z w t} (v0 cos wd t - (w u0 + z v0) / s sin wd t); its first
+  // zero t > 0: tan(wd t) = v0 / c, in (0, pi / wd].
   const double c = (w * u0 + z * v0) / s;
-  // First t > 0 with v = 0: tan(wd t) = v0 / c, in (0, pi / wd].
   double phase = std::atan2(v0, c);
   if (phase <= 0)
     phase += std::numbers::pi;
-  const double t = phase / wd;
   const double ut =
-      std::exp(-z * w * t) * (u0 * std::cos(wd * t) + b * std::sin(wd * t));
+      free_vibration_displacement(u0, v0, period, damping, phase / wd);
   return std::max(std::abs(u0), std::abs(ut));
 }
 

@@ -20,18 +20,9 @@ public:
   /// Relative displacement u_k [m] and velocity v_k [m/s] at every sample.
   void respond(std::span<const double> a, std::vector<double>& u,
                std::vector<double>& v) const;
-  /// max |u(t)| over the record and the free vibration after it, m. With
-  /// `substeps` > 1 each step of `a` is cut into that many steps of the
-  /// same linear input (this object's dt is then the record's dt /
-  /// substeps), so that the peak between the record's samples is seen.
-  /// One oscillator at a time: response_spectrum steps banks (SdofBank).
-  double peak_displacement(std::span<const double> a, int substeps = 1) const;
   /// The recurrence: u+ = a11 u + a12 v + b11 a_k + b12 a_k+1 and
   /// v+ = a21 u + a22 v + b21 a_k + b22 a_k+1.
   double a11, a12, a21, a22, b11, b12, b21, b22;
-
-private:
-  double _w, _zeta;
 };
 
 /// Oscillators of one damping ratio and one sub-step count, stepped
@@ -85,6 +76,10 @@ struct SdofBanks
 /// Sub-steps per record step that sample a period at least
 /// `samples_per_period` times (at least 1).
 int substeps_for(double period, double dt, int samples_per_period = 64);
+
+/// u(t) of the free vibration from (u0, v0) (at rest input).
+double free_vibration_displacement(double u0, double v0, double period,
+                                   double damping, double t);
 
 /// Largest |u(t)| for t >= 0 of the free vibration from (u0, v0): |u0| or
 /// the first extremum (where v = 0), whichever is larger (the later ones
