@@ -527,32 +527,8 @@ ArchModel build_arch_dam(MPI_Comm comm, const ArchDamDefinition& def,
   MPI_Comm_rank(comm, &rank);
 
   MeshArrays d;
-  bool ok = true, invalid = false;
-  std::string message;
-  if (rank == 0)
-  {
-    try
-    {
-      d = build_on_root(g, verbose);
-    }
-    catch (const std::invalid_argument& e)
-    {
-      ok = false;
-      invalid = true;
-      message = e.what();
-    }
-    catch (const std::exception& e)
-    {
-      ok = false;
-      message = std::string("build_arch_dam: ") + e.what();
-    }
-    catch (...)
-    {
-      ok = false;
-      message = "build_arch_dam: unknown error in gmsh";
-    }
-  }
-  check_root_status(comm, ok, message, invalid);
+  on_root(comm, [&] { d = build_on_root(g, verbose); },
+          {"build_arch_dam: ", "build_arch_dam: unknown error in gmsh", true});
 
   const std::size_t num_nodes = d.x.size() / 3;
   ArchModel out;

@@ -193,30 +193,10 @@ Model model_from_gmsh(MPI_Comm comm, int tdim)
     throw std::invalid_argument("model_from_gmsh: tdim must be 2 or 3, got " +
                                 std::to_string(tdim));
   }
-  int rank = 0;
-  MPI_Comm_rank(comm, &rank);
 
   GmshData d;
-  bool ok = true;
-  std::string message;
-  if (rank == 0)
-  {
-    try
-    {
-      d = read_gmsh(tdim);
-    }
-    catch (const std::exception& e)
-    {
-      ok = false;
-      message = e.what();
-    }
-    catch (...)
-    {
-      ok = false;
-      message = "model_from_gmsh: unknown error while reading gmsh";
-    }
-  }
-  check_root_status(comm, ok, message);
+  on_root(comm, [&] { d = read_gmsh(tdim); },
+          {"", "model_from_gmsh: unknown error while reading gmsh"});
 
   const int nn = tdim + 1;
   const std::size_t gdim = tdim;

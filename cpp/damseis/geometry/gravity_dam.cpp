@@ -279,32 +279,17 @@ Model build_gravity_dam(MPI_Comm comm, const GravityDamSection& s, bool verbose,
   // Deterministic, so every rank throws the same error
   validate(s);
 
-  int rank = 0;
-  MPI_Comm_rank(comm, &rank);
   std::optional<GmshSession> session;
-  bool ok = true;
-  std::string message;
-  if (rank == 0)
-  {
-    try
-    {
-      session.emplace(verbose);
-      build_and_mesh(s);
-      if (!mesh_file.empty())
-        gmsh::write(mesh_file.string());
-    }
-    catch (const std::exception& e)
-    {
-      ok = false;
-      message = std::string("build_gravity_dam: gmsh failed: ") + e.what();
-    }
-    catch (...)
-    {
-      ok = false;
-      message = "build_gravity_dam: gmsh failed: unknown gmsh error";
-    }
-  }
-  check_root_status(comm, ok, message);
+  on_root(comm,
+          [&]
+          {
+            session.emplace(verbose);
+            build_and_mesh(s);
+            if (!mesh_file.empty())
+              gmsh::write(mesh_file.string());
+          },
+          {"build_gravity_dam: gmsh failed: ",
+           "build_gravity_dam: gmsh failed: unknown gmsh error"});
   // gmsh stays open on rank 0 until the conversion is done
   return model_from_gmsh(comm, 2);
 }

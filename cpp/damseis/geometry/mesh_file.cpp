@@ -76,28 +76,22 @@ MeshFile read_mesh_file(MPI_Comm comm, const std::filesystem::path& file)
   // gmsh lives on rank 0 from opening the file to the end of the
   // distribution (model_from_gmsh reads the open model there).
   std::unique_ptr<GmshSession> session;
-  std::string groups, error;
-  if (rank == 0)
-  {
-    session = std::make_unique<GmshSession>(false);
-    try
-    {
-      out.groups = open_file(file);
-      for (const auto& [name, g] : out.groups)
-        out.tdim = std::max(out.tdim, g.dim);
-      if (out.tdim < 2)
-        throw std::runtime_error(
-            file.string() +
-            ": no physical group of dimension 2 or 3 (the cells of the "
-            "model are those of physical groups)");
-      groups = group_lines(out.groups);
-    }
-    catch (const std::exception& e)
-    {
-      error = e.what();
-    }
-  }
-  check_root_status(comm, error.empty(), error);
+  std::string groups;
+  on_root(comm,
+          [&]
+          {
+            session = std::make_unique<GmshSession>(false);
+            out.groups = open_file(file);
+            for (const auto& [name, g] : out.groups)
+              out.tdim = std::max(out.tdim, g.dim);
+            if (out.tdim < 2)
+              throw std::runtime_error(
+                  file.string() +
+                  ": no physical group of dimension 2 or 3 (the cells of the "
+                  "model are those of physical groups)");
+            groups = group_lines(out.groups);
+          },
+          {"", file.string() + ": gmsh failed while reading it"});
   groups = broadcast_from_root(comm, groups);
   MPI_Bcast(&out.tdim, 1, MPI_INT, 0, comm);
   if (rank != 0)

@@ -24,4 +24,37 @@ void check_root_status(MPI_Comm comm, bool ok, const std::string& message,
     throw std::invalid_argument(text);
   throw std::runtime_error(text);
 }
+
+void on_root(MPI_Comm comm, const std::function<void()>& work,
+             const RootErrors& errors)
+{
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  bool ok = true, invalid = false;
+  std::string message;
+  if (rank == 0)
+  {
+    try
+    {
+      work();
+    }
+    catch (const std::invalid_argument& e)
+    {
+      ok = false;
+      invalid = errors.keep_invalid;
+      message = invalid ? e.what() : errors.prefix + e.what();
+    }
+    catch (const std::exception& e)
+    {
+      ok = false;
+      message = errors.prefix + e.what();
+    }
+    catch (...)
+    {
+      ok = false;
+      message = errors.unknown;
+    }
+  }
+  check_root_status(comm, ok, message, invalid);
+}
 } // namespace damseis::geometry

@@ -2,6 +2,7 @@
 // message, and any text it produced.
 #pragma once
 
+#include <functional>
 #include <mpi.h>
 #include <string>
 
@@ -15,4 +16,17 @@ std::string broadcast_from_root(MPI_Comm comm, std::string text);
 /// std::runtime_error). Collective.
 void check_root_status(MPI_Comm comm, bool ok, const std::string& message,
                        bool invalid = false);
+
+/// How on_root words an exception of rank 0's work.
+struct RootErrors
+{
+  std::string prefix;  ///< before the message of a std::exception
+  std::string unknown; ///< the message for anything else (gmsh throws strings)
+  bool keep_invalid = false; ///< std::invalid_argument as such, unprefixed
+};
+
+/// Runs `work` on rank 0 and throws what it threw on every rank (worded by
+/// `errors`; std::runtime_error unless kept invalid). Collective.
+void on_root(MPI_Comm comm, const std::function<void()>& work,
+             const RootErrors& errors);
 } // namespace damseis::geometry
