@@ -24,8 +24,9 @@ import json, sys
 name, ranks, summ, tm = sys.argv[1:]
 wall, mem = tm.split()
 s = json.load(open(summ))
-print(f"| {name} | {ranks} | {s['n_dofs']} | {s['solver'].get('factorization', '') if isinstance(s.get('solver'), dict) else s.get('solver', '')} | "
-      f"{s.get('mesh_seconds', 0):.1f} | {s['modal_seconds']:.2f} | "
+mesh = f"{s['mesh_seconds']:.1f}" if 'mesh_seconds' in s else "-"  # 3D only
+print(f"| {name} | {ranks} | {s['n_dofs']} | {s['solver']} | "
+      f"{mesh} | {s['modal_seconds']:.2f} | "
       f"{s['factorization_seconds']:.2f} | {s['steps']} | "
       f"{1e3 * s['seconds_per_step']:.2f} | {s['time_loop_seconds']:.2f} | "
       f"{float(wall):.2f} | {int(mem) / 1024:.0f} |")
@@ -40,7 +41,7 @@ PY
   echo "ranks; 3D: MUMPS). Wall: the whole mpirun, GNU time; peak memory:"
   echo "the largest process. Koyna rows alternate serial / 2 ranks, 3 pairs."
   echo
-  echo "| case | ranks | dofs | factorisation | mesh [s] | modal [s] | factor [s] | steps | per step [ms] | time loop [s] | wall [s] | peak memory [MB] |"
+  echo "| case | ranks | dofs | factorisation | mesh [s] (3D only) | modal [s] | factor [s] | steps | per step [ms] | time loop [s] | wall [s] | peak memory [MB] |"
   echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
 } >"$report"
 

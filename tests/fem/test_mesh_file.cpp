@@ -3,8 +3,10 @@
 // count with its cells, groups and tags; the area of a polygon and the
 // length of a tagged edge are exact for straight-sided triangles. Bad
 // files give one error, the same on every rank.
+#include "fem_test_support.h"
 #include <cmath>
 #include <damseis/fem/elastic_model.h>
+#include <damseis/geometry/gmsh_session.h>
 #include <damseis/geometry/gravity_dam.h>
 #include <damseis/geometry/mesh_file.h>
 #include <damseis/geometry/tags.h>
@@ -22,11 +24,7 @@ using damseis::geometry::GravityDamSection;
 
 namespace
 {
-double sum(double x)
-{
-  MPI_Allreduce(MPI_IN_PLACE, &x, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
-  return x;
-}
+using damseis::test::global_sum;
 
 /// A temporary folder every rank agrees on (made by rank 0).
 std::filesystem::path shared_folder(const std::string& name)
@@ -54,8 +52,7 @@ std::int64_t write_rectangle(const std::filesystem::path& file)
   std::int64_t cells = 0;
   if (rank == 0)
   {
-    gmsh::initialize(0, nullptr, false);
-    gmsh::option::setNumber("General.Terminal", 0);
+    const GmshSession session(false);
     gmsh::model::add("rectangle");
     const int s = gmsh::model::occ::addRectangle(0, 0, 0, 70, 100);
     gmsh::model::occ::synchronize();
@@ -85,7 +82,6 @@ std::int64_t write_rectangle(const std::filesystem::path& file)
     for (const auto& t : tags)
       cells += static_cast<std::int64_t>(t.size());
     gmsh::write(file.string());
-    gmsh::finalize();
   }
   MPI_Bcast(&cells, 1, MPI_INT64_T, 0, MPI_COMM_WORLD);
   return cells;
@@ -134,7 +130,7 @@ TEST(MeshFile, RectangleReadsBackWithItsGroups)
     area += 0.5 * std::abs((q[0] - p[0]) * (r[1] - p[1]) -
                            (q[1] - p[1]) * (r[0] - p[0]));
   }
-  EXPECT_NEAR(sum(area), 7000.0, 1e-9 * 7000.0);
+  EXPECT_NEAR(global_sum(area), 7000.0, 1e-9 * 7000.0);
   std::int64_t tagged = 0;
   for (std::int32_t v : m.model.cell_tags->values())
     tagged += v == 7;
@@ -159,7 +155,7 @@ TEST(MeshFile, RectangleReadsBackWithItsGroups)
       const double* q = &x[3 * g[2 * i + 1]];
       l += std::hypot(q[0] - p[0], q[1] - p[1]);
     }
-    EXPECT_NEAR(sum(l), length, 1e-9 * length) << "tag " << tag;
+    EXPECT_NEAR(global_sum(l), length, 1e-9 * length) << "tag " << tag;
   }
 }
 
@@ -172,8 +168,7 @@ TEST(MeshFile, BadFilesGiveOneErrorOnEveryRank)
   {
     std::ofstream(dir / "garbage.msh") << "$MeshFormat\nnot a mesh\n";
     // A mesh with only a curve group: no cells.
-    gmsh::initialize(0, nullptr, false);
-    gmsh::option::setNumber("General.Terminal", 0);
+    const GmshSession session(false);
     const int l =
         gmsh::model::occ::addLine(gmsh::model::occ::addPoint(0, 0, 0),
                                   gmsh::model::occ::addPoint(1, 0, 0));
@@ -181,7 +176,6 @@ TEST(MeshFile, BadFilesGiveOneErrorOnEveryRank)
     gmsh::model::addPhysicalGroup(1, {l}, 1);
     gmsh::model::mesh::generate(1);
     gmsh::write((dir / "line.msh").string());
-    gmsh::finalize();
   }
   MPI_Barrier(MPI_COMM_WORLD);
   EXPECT_NE(read_error(dir / "missing.msh").find("no such mesh file"),

@@ -294,11 +294,7 @@ const Arrays& block(bool foundation)
 /// New AIJ matrix P^T A P.
 PMat ptap(Mat A, Mat P)
 {
-  Mat aij, r;
-  MatConvert(A, MATAIJ, MAT_INITIAL_MATRIX, &aij);
-  MatPtAP(aij, P, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &r);
-  MatDestroy(&aij);
-  return own(r);
+  return own(damseis::fem::reduce_to_tied(A, P));
 }
 
 /// x with A x = b (the project's direct solver).

@@ -2,7 +2,6 @@
 #include <chrono>
 #include <cmath>
 #include <damseis/geometry/mesh_estimate.h>
-#include <damseis/linalg/petsc_vectors.h>
 #include <damseis/results/gather.h>
 #include <damseis/results/progress.h>
 #include <damseis/results/singular_points.h>

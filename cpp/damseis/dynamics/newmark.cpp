@@ -89,8 +89,7 @@ LinearNewmark::~LinearNewmark()
   for (Vec* x : {&_f, &_rhs, &_u_next, &_image_next})
     VecDestroy(x);
   MatDestroy(&_Keff);
-  if (_Ce)
-    MatDestroy(&_Ce);
+  MatDestroy(&_Ce);
 }
 
 void LinearNewmark::set_state(Vec u, Vec v, Vec a, Vec f)

@@ -46,7 +46,8 @@ public:
   /// M and K must stay alive while the integrator is used. Fixed dofs are
   /// expected as identity rows of K and zero rows of M with a zero load.
   /// `extra_damping`: damping matrices added to the Rayleigh damping (such
-  /// as boundary dashpots), with the layout of K; they must stay alive too.
+  /// as boundary dashpots), with the layout of K; they are copied (summed)
+  /// here.
   LinearNewmark(
       Mat M, Mat K, RayleighDamping damping, TimeScheme scheme,
       linalg::Factorization factorization = linalg::Factorization::automatic,

@@ -55,8 +55,8 @@ private:
   int _max_iterations;
   KSP _krylov = nullptr;
   /// LU of J: PETSc's serially (its solves cost a third of MUMPS' here; a
-  /// zero pivot is reported and the initial matrix used instead), MUMPS in
-  /// parallel.
+  /// zero pivot is reported and the initial matrix used instead); in
+  /// parallel the redundant PETSc LU up to 10^5 unknowns, MUMPS beyond.
   std::unique_ptr<linalg::DirectSolver> _tangent;
   int _tangent_level = -1; ///< level of the stored factors (-1: none)
   int _last_iterations = 0;

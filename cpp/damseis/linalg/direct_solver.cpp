@@ -141,9 +141,8 @@ void DirectSolver::factorize_lu(Mat A)
   KSPGetPC(_ksp, &pc);
   if (_converted)
     MatDestroy(&_converted);
-  if (_kind == Factorization::redundant)
-    set_up_redundant(PetscObjectComm(reinterpret_cast<PetscObject>(_ksp)));
-  else
+  // (The redundant preconditioner is an LU already: create_ksp.)
+  if (_kind != Factorization::redundant)
   {
     PCSetType(pc, PCLU);
     PCFactorSetMatSolverType(
@@ -199,9 +198,8 @@ void DirectSolver::factorize(Mat A)
   choose_for(A);
   if (_kind == Factorization::redundant)
   {
-    // LU of the gathered matrix (symmetric or not): set_up_redundant.
+    // LU of the gathered matrix, as create_ksp set it up.
     const auto t0 = std::chrono::steady_clock::now();
-    set_up_redundant(PetscObjectComm(reinterpret_cast<PetscObject>(_ksp)));
     MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE);
     set_up(A);
     _factor_seconds =
