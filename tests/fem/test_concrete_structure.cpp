@@ -330,15 +330,16 @@ TEST(ConcreteStructure, ElasticModeMatchesLinearEngine)
                     2, {{tags::dam, concrete}}, PlaneMode::plane_stress);
     fe.fix({tags::dam_base});
     if (!nonlinear)
-      return damseis::analysis::run_linear_seismic(fe, s, dir / "linear", "");
+      return damseis::analysis::run_linear_seismic(fe, s, {},
+                                                   {dir / "linear", ""});
     damseis::analysis::ConcreteSettings c;
     c.kind = damseis::analysis::ConcreteModelKind::elastic;
     c.params.E = concrete.E;
     c.params.nu = concrete.nu;
     c.params.mode = material::Mode::elastic;
     return damseis::analysis::run_nonlinear_seismic(
-        fe, s, c, {{tags::dam, concrete}}, PlaneMode::plane_stress, {},
-        dir / "nonlinear", "");
+        fe, s, {c, {{tags::dam, concrete}}, PlaneMode::plane_stress}, {},
+        {dir / "nonlinear", ""});
   };
   const auto a = run(false), b = run(true);
   const double ua = a["crest_displacement_max_m"]["value"];
@@ -385,7 +386,8 @@ std::vector<double> plastic_section(double dt, bool implex,
   c.newton.extrapolated_predictor = predictor;
   const auto dir = std::filesystem::temp_directory_path() / "damseis_implex";
   summary = damseis::analysis::run_nonlinear_seismic(
-      fe, s, c, {{tags::dam, concrete}}, PlaneMode::plane_stress, {}, dir, "");
+      fe, s, {c, {{tags::dam, concrete}}, PlaneMode::plane_stress}, {},
+      {dir, ""});
   std::vector<double> ux;
   std::ifstream csv(dir / "crest.csv");
   std::string line;

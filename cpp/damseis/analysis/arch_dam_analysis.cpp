@@ -51,7 +51,7 @@ nlohmann::json run_arch_dam_analysis(MPI_Comm comm, const ArchDamConfig& cfg,
   seismic.singular_where =
       "the mesh nodes where the upstream and downstream faces meet the rock";
   nlohmann::json summary =
-      run_linear_seismic(fe, seismic, out_dir, case_text, tie.mat());
+      run_linear_seismic(fe, seismic, {}, {out_dir, case_text}, tie.mat());
   summary["analysis"] = "arch dam, linear elastic, massless foundation";
   summary["joints"] = {{"count", arch.joints.size()},
                        {"model", "bonded"},

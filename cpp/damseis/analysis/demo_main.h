@@ -4,9 +4,10 @@
 // could not be solved).
 #pragma once
 
+#include "linear_seismic.h"
 #include <cstdio>
-#include <damseis/analysis/linear_seismic.h>
 #include <damseis/dynamics/nonlinear_newmark.h>
+#include <damseis/engine/stop_signals.h>
 #include <damseis/input/command_line.h>
 #include <damseis/results/output_folder.h>
 #include <damseis/results/progress.h>
@@ -87,7 +88,7 @@ int demo_main(int argc, char** argv, const std::string& name,
       std::fprintf(stderr, "%s: error: %s\n", name.c_str(), e.what());
     status = 2;
   }
-  catch (const Interrupted& e)
+  catch (const engine::Interrupted& e)
   {
     if (rank == 0)
       std::fprintf(stderr, "%s: %s\n", name.c_str(), e.what());

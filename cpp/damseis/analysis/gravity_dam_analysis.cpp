@@ -52,15 +52,15 @@ nlohmann::json run_one(MPI_Comm comm, const GravityDamConfig& cfg,
   nlohmann::json summary;
   if (kind == ConcreteModelKind::linear)
   {
-    summary = run_linear_seismic(fe, cfg.seismic, out_dir, case_text, nullptr,
-                                 extra_vecs);
+    summary =
+        run_linear_seismic(fe, cfg.seismic, extra_vecs, {out_dir, case_text});
     summary["analysis"] = "gravity dam section, linear elastic";
   }
   else
   {
-    summary =
-        run_nonlinear_seismic(fe, cfg.seismic, cfg.concrete_model, materials,
-                              cfg.plane, extra_vecs, out_dir, case_text);
+    summary = run_nonlinear_seismic(fe, cfg.seismic,
+                                    {cfg.concrete_model, materials, cfg.plane},
+                                    extra_vecs, {out_dir, case_text});
     summary["analysis"] =
         "gravity dam section, HTC concrete (" + to_string(kind) + ")";
   }

@@ -7,9 +7,17 @@ namespace damseis::analysis
 using dolfinx::la::petsc::Vector;
 
 GroundMotionLoad::GroundMotionLoad(const fem::ElasticModel& fe,
-                                   const SeismicSettings& s, Mat M, Mat tie)
+                                   const SeismicSettings& s, Mat M, Mat tie,
+                                   Vec sustained)
     : _s(s)
 {
+  if (sustained)
+  {
+    Vec copy;
+    VecDuplicate(sustained, &copy);
+    VecCopy(sustained, copy);
+    _sustained = Vector(copy, false);
+  }
   for (int c = 0; c < fe.dim(); ++c)
   {
     if (!s.motion[c].active)
@@ -26,10 +34,10 @@ GroundMotionLoad::GroundMotionLoad(const fem::ElasticModel& fe,
   }
 }
 
-void GroundMotionLoad::assemble(int k, Vec base, Vec f) const
+void GroundMotionLoad::assemble(int k, Vec f) const
 {
-  if (base)
-    VecCopy(base, f);
+  if (_sustained.vec())
+    VecCopy(_sustained.vec(), f);
   else
     VecSet(f, 0.0);
   for (std::size_t i = 0; i < _active.size(); ++i)

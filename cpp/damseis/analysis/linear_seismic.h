@@ -12,8 +12,16 @@
 
 namespace damseis::analysis
 {
+/// Where a run writes (created if needed) and the case text it ran
+/// (case_used.toml; with the model, the checkpoint's fingerprint).
+struct RunFolder
+{
+  std::filesystem::path dir;
+  std::string case_text;
+};
+
 /// Runs the analysis on `fe` (materials and fixed boundaries already set)
-/// and writes into `out_dir` (created): summary.json, crest.csv,
+/// and writes into `folder.dir` (created): summary.json, crest.csv,
 /// fields.xdmf, envelopes.xdmf, modes.xdmf, face_<name>.csv, case_used.toml.
 /// Returns the summary. Collective.
 ///
@@ -21,23 +29,16 @@ namespace damseis::analysis
 /// in out_dir/checkpoint; with settings.restart the run resumes from there
 /// (fields written after a restart go to fields_from_step<k>.xdmf). On
 /// SIGINT/SIGTERM, or at settings.stop_at_step, the run writes a checkpoint
-/// at the end of the current step and throws Interrupted.
+/// at the end of the current step and throws engine::Interrupted.
 ///
 /// `tie` (optional, from fem::tie_prolongation) ties coincident dofs
 /// (bonded joints): the system is solved for u_r with u = P u_r.
 /// `extra_static_loads` (full-space vectors, zero at fixed dofs: silt,
 /// uplift) are added to the static stage.
-nlohmann::json
-run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& settings,
-                   const std::filesystem::path& out_dir,
-                   const std::string& case_text, Mat tie = nullptr,
-                   const std::vector<Vec>& extra_static_loads = {});
-
-/// Thrown when a run was stopped by a signal after writing a checkpoint.
-struct Interrupted : std::runtime_error
-{
-  using std::runtime_error::runtime_error;
-};
+nlohmann::json run_linear_seismic(fem::ElasticModel& fe,
+                                  const SeismicSettings& settings,
+                                  const std::vector<Vec>& extra_static_loads,
+                                  const RunFolder& folder, Mat tie = nullptr);
 } // namespace damseis::analysis
 
 namespace damseis::analysis

@@ -1,14 +1,15 @@
 #include "nonlinear_seismic.h"
-#include "checkpoint.h"
+#include "concrete_stepper.h"
 #include "concrete_system.h"
+#include "engine_settings.h"
 #include "ground_motion_load.h"
-#include "linear_seismic.h"
 #include "modal_stage.h"
+#include "recorders.h"
 #include "run_outputs.h"
 #include "static_stage.h"
-#include "stop_signals.h"
 #include <chrono>
 #include <cmath>
+#include <damseis/engine/time_history.h>
 #include <damseis/fem/concrete_model.h>
 #include <damseis/geometry/tags.h>
 #include <damseis/linalg/petsc_vectors.h>
@@ -57,6 +58,66 @@ struct ScalarEnvelope
       }
     }
   }
+};
+
+/// The envelopes of the concrete state at the dam points: the strain rate,
+/// the rate of kappa_t, and the vertical stress sigma_yy (the paper's Fig.
+/// 8: largest and, as the largest of -sigma_yy, smallest; same stress as the
+/// principal envelopes).
+class ConcreteRecorder : public engine::Observer
+{
+public:
+  ConcreteRecorder(const fem::ConcreteModel& cm, const StressRecorder& stresses,
+                   std::int32_t points)
+      : _envelopes{ScalarEnvelope(points), ScalarEnvelope(points),
+                   ScalarEnvelope(points, -HUGE_VAL),
+                   ScalarEnvelope(points, -HUGE_VAL)},
+        _cm(cm), _stresses(stresses), _syy(points)
+  {
+  }
+  void record(int, double t) override
+  {
+    rate().update(_cm.strain_rate(), t);
+    kt_rate().update(_cm.kappa_t_rate(), t);
+    const auto s = _stresses.stress();
+    for (std::size_t i = 0; i < _syy.size(); ++i)
+      _syy[i] = s[3 * i + 1];
+    syy_max().update(_syy, t);
+    for (double& v : _syy)
+      v = -v;
+    syy_min().update(_syy, t);
+  }
+  void save(engine::Arrays& arrays) const override
+  {
+    for (std::size_t i = 0; i < _envelopes.size(); ++i)
+    {
+      arrays[std::string(names[i]) + "_max"] = _envelopes[i].max;
+      arrays[std::string(names[i]) + "_t"] = _envelopes[i].t;
+    }
+  }
+  void restore(const engine::CheckpointData& d) override
+  {
+    for (std::size_t i = 0; i < _envelopes.size(); ++i)
+    {
+      _envelopes[i].max = engine::checkpoint_array(
+          d, std::string(names[i]) + "_max", _syy.size());
+      _envelopes[i].t = engine::checkpoint_array(
+          d, std::string(names[i]) + "_t", _syy.size());
+    }
+  }
+  ScalarEnvelope& rate() { return _envelopes[0]; }
+  ScalarEnvelope& kt_rate() { return _envelopes[1]; }
+  ScalarEnvelope& syy_max() { return _envelopes[2]; }
+  ScalarEnvelope& syy_min() { return _envelopes[3]; }
+
+private:
+  /// The envelopes and their checkpoint names.
+  std::array<ScalarEnvelope, 4> _envelopes;
+  static constexpr std::array<const char*, 4> names = {"rate", "kt_rate",
+                                                       "syy_hi", "syy_lo"};
+  const fem::ConcreteModel& _cm;
+  const StressRecorder& _stresses;
+  std::vector<double> _syy;
 };
 
 /// Largest value over the flagged owned points of all ranks, with where and
@@ -138,13 +199,13 @@ void write_dam_points(MPI_Comm comm, const results::StressEnvelope& env,
 } // namespace
 
 json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
-                           const ConcreteSettings& concrete,
-                           const std::map<int, fem::Material>& elastic,
-                           fem::PlaneMode plane,
+                           const ConcreteBulk& bulk,
                            const std::vector<Vec>& extra_static_loads,
-                           const std::filesystem::path& out_dir,
-                           const std::string& case_text)
+                           const RunFolder& folder)
 {
+  const ConcreteSettings& concrete = bulk.concrete;
+  const std::filesystem::path& out_dir = folder.dir;
+  const std::string& case_text = folder.case_text;
   results::set_stage("assembly");
   const auto wall_start = Clock::now();
   const auto model = fe.model();
@@ -158,7 +219,8 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   const fem::Reservoir* added = s.westergaard && wet ? &s.reservoir : nullptr;
   Matrix K(fe.assemble_stiffness(), false);
   Matrix M(fe.assemble_mass(added), false);
-  fem::ConcreteModel cm(fe, {{tags::dam, concrete.params}}, elastic, plane);
+  fem::ConcreteModel cm(fe, {{tags::dam, concrete.params}}, bulk.elastic,
+                        bulk.plane);
   // An elastic material has no plastic strain to extrapolate: no IMPL-EX
   // steps, no extrapolated predictor.
   const bool plastic = concrete.kind != ConcreteModelKind::elastic;
@@ -245,11 +307,10 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   dynamics::NewtonSettings newton_settings = concrete.newton;
   newton_settings.extrapolated_predictor =
       concrete.newton.extrapolated_predictor && !concrete.implex && plastic;
-  dynamics::NonlinearNewmark newmark(M.mat(), K.mat(), modal.damping, s.scheme,
-                                     system, newton_settings, s.factorization);
-  const GroundMotionLoad ground(fe, s, M.mat());
-  Vector f = linalg::column_vector(K.mat());
-  auto set_load = [&](int k) { ground.assemble(k, F_static.vec(), f.vec()); };
+  ConcreteStepper stepper(M.mat(), K.mat(), modal.damping, s.scheme, system, cm,
+                          newton_settings, s.factorization, u_static.vec(),
+                          fint0.vec());
+  const GroundMotionLoad ground(fe, s, M.mat(), nullptr, F_static.vec());
 
   std::filesystem::create_directories(out_dir);
   if (rank == 0)
@@ -257,7 +318,7 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   write_modes(
       fe, modal.modes, [](Vec x) { return x; }, out_dir / "modes.xdmf");
 
-  // Points: the quadrature points of the owned cells.
+  // Recorders. Points: the quadrature points of the owned cells.
   auto Sq = cm.stress_space();
   const std::int32_t n_pts = Sq->dofmap()->index_map->size_local();
   std::vector<std::int8_t> in_dam(n_pts, 0);
@@ -269,227 +330,50 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
         in_dam[d] = 1;
     }
   }
-  results::StressEnvelope envelope(3, cm.coordinates(), in_dam);
-  ScalarEnvelope rate_env(n_pts), kt_rate_env(n_pts);
-  // Vertical stress sigma_yy (the paper's Fig. 8): largest and, as the
-  // largest of -sigma_yy, smallest; same stress as the principal envelopes.
-  ScalarEnvelope syy_max(n_pts, -HUGE_VAL), syy_min(n_pts, -HUGE_VAL);
-  std::vector<double> syy(n_pts);
+  FullDisplacement u(stepper, nullptr);
+  std::vector<double> s_field(cm.stress().size());
+  StressRecorder stresses(results::StressEnvelope(3, cm.coordinates(), in_dam),
+                          [&]() -> std::span<const double>
+                          {
+                            auto sig = cm.stress();
+                            for (std::size_t i = 0; i < s_field.size(); ++i)
+                              s_field[i] = s.stress_total
+                                               ? sig[i]
+                                               : sig[i] - sig_static[i];
+                            return s_field;
+                          });
+  ConcreteRecorder concrete_state(cm, stresses, n_pts);
   std::vector<std::vector<std::int32_t>> face_pts;
   for (const auto& [name, face_tags] : s.faces)
     face_pts.push_back(
         results::face_points(*Sq, *model.facet_tags, face_tags, false));
-
-  results::PointProbe crest(*fe.V(), s.crest_point);
-  results::PointProbe base(*fe.V(), s.base_point);
-  const auto crest_static = crest.value_on_all(u_static.vec());
-  const auto base_static = base.value_on_all(u_static.vec());
+  PointHistories points(*fe.V(), s.crest_point, s.base_point, s.steps, u);
+  const auto crest_static = points.crest().value_on_all(u_static.vec());
+  const auto base_static = points.base().value_on_all(u_static.vec());
   // Envelope of the seismic horizontal displacement along the upstream face.
-  results::DisplacementEnvelope face_u(*fe.V(), *model.facet_tags,
-                                       tags::upstream_face);
+  FaceDisplacementRecorder face_u(*fe.V(), *model.facet_tags,
+                                  tags::upstream_face, points.base(), u,
+                                  u_static.vec(), base_static[0]);
+  FieldRecorder fields(fe, out_dir, s.output_every, [&] { return u.vec(); },
+                       stresses,
+                       {Sq,
+                        {"kappa_t", "kappa_c", "strain_rate_per_s"},
+                        [&]() -> std::vector<std::span<const double>> {
+                          return {cm.kappa_t(), cm.kappa_c(), cm.strain_rate()};
+                        }});
+
+  // The time history.
+  engine::TimeHistory history(
+      comm, time_history_settings(s, fe, out_dir, case_text), stepper, ground);
+  for (engine::Observer* o : std::initializer_list<engine::Observer*>{
+           &u, &stresses, &concrete_state, &points, &face_u, &fields})
+    history.observe(*o);
+  const engine::TimeHistoryReport run = history.run();
   const int n = s.steps;
   const double dt = s.scheme.dt;
-  std::vector<double> hist(2 * dim * (n + 1), 0.0);
-  // Newton statistics of the time history (checkpointed): iterations,
-  // tangent factorisations, cuts, max iterations in a step, max inelastic
-  // points, GMRES iterations, seconds in residuals, tangent assembly,
-  // factorisations and direction solves, sub-stepped point updates, return
-  // maps, local Newton iterations, points that left the elastic fast path
-  // and the core-seconds of their updates; IMPL-EX equilibrium error: sum of
-  // squares, largest, its time.
-  std::vector<double> stats(18, 0.0);
-
-  int k0 = 0;
-  const std::filesystem::path ckpt_dir = out_dir / "checkpoint";
-  const std::vector<double> coords = fe.V()->tabulate_dof_coordinates(false);
-  const std::uint64_t print = fingerprint(coords) ^ case_fingerprint(case_text);
-  std::optional<CheckpointData> restart;
-  if (s.restart)
-    restart = read_checkpoint(comm, ckpt_dir, print);
-  if (restart)
-  {
-    k0 = restart->step;
-    Vector u = linalg::column_vector(K.mat()),
-           v = linalg::column_vector(K.mat()),
-           a = linalg::column_vector(K.mat()),
-           fi = linalg::column_vector(K.mat());
-    const CheckpointData& d = *restart;
-    const std::size_t np = static_cast<std::size_t>(n_pts);
-    restore_collectively(
-        comm, ckpt_dir,
-        [&]
-        {
-          linalg::set_owned_values(u.vec(), checkpoint_array(d, "u"));
-          linalg::set_owned_values(v.vec(), checkpoint_array(d, "v"));
-          linalg::set_owned_values(a.vec(), checkpoint_array(d, "a"));
-          linalg::set_owned_values(fi.vec(), checkpoint_array(d, "f_int"));
-          cm.restore(d.arrays);
-          envelope.restore(
-              checkpoint_array(d, "env_max"), checkpoint_array(d, "env_t_max"),
-              checkpoint_array(d, "env_min"), checkpoint_array(d, "env_t_min"));
-          rate_env.max = checkpoint_array(d, "rate_max", np);
-          rate_env.t = checkpoint_array(d, "rate_t", np);
-          kt_rate_env.max = checkpoint_array(d, "kt_rate_max", np);
-          kt_rate_env.t = checkpoint_array(d, "kt_rate_t", np);
-          syy_max.max = checkpoint_array(d, "syy_max", np);
-          syy_max.t = checkpoint_array(d, "syy_t_max", np);
-          syy_min.max = checkpoint_array(d, "syy_min", np);
-          syy_min.t = checkpoint_array(d, "syy_t_min", np);
-          face_u.restore(checkpoint_array(d, "face_u"));
-          hist = checkpoint_array(d, "history", hist.size());
-          stats = checkpoint_array(d, "newton");
-          if (stats.size() > 18)
-            throw std::runtime_error("array newton is too long");
-          stats.resize(18, 0.0);
-        });
-    set_load(k0);
-    newmark.set_state(u.vec(), v.vec(), a.vec(), f.vec(), fi.vec());
-    results::print(comm, "restarting from the checkpoint at step " +
-                             std::to_string(k0));
-  }
-  else
-  {
-    Vector v0 = linalg::column_vector(K.mat()),
-           a0 = linalg::column_vector(K.mat());
-    ground.initial_acceleration(a0.vec());
-    set_load(0);
-    newmark.set_state(u_static.vec(), v0.vec(), a0.vec(), f.vec(), fint0.vec());
-  }
-
-  results::FieldWriter writer(
-      fe,
-      out_dir / (k0 == 0 ? std::string("fields.xdmf")
-                         : "fields_from_step" + std::to_string(k0) + ".xdmf"),
-      Sq, {"kappa_t", "kappa_c", "strain_rate_per_s"});
-  dolfinx::fem::Function<double> u_fn(fe.V());
-  std::vector<double> s_field(cm.stress().size());
-
-  auto record_state = [&](int k, double t)
-  {
-    auto sig = cm.stress();
-    if (s.stress_total)
-      std::copy(sig.begin(), sig.end(), s_field.begin());
-    else
-    {
-      for (std::size_t i = 0; i < s_field.size(); ++i)
-        s_field[i] = sig[i] - sig_static[i];
-    }
-    envelope.update(std::span<const double>(s_field.data(), 3 * n_pts), t);
-    rate_env.update(cm.strain_rate(), t);
-    kt_rate_env.update(cm.kappa_t_rate(), t);
-    for (std::int32_t i = 0; i < n_pts; ++i)
-      syy[i] = s_field[3 * i + 1];
-    syy_max.update(syy, t);
-    for (double& v : syy)
-      v = -v;
-    syy_min.update(syy, t);
-    const auto c = crest.value(newmark.u()), b = base.value(newmark.u());
-    face_u.update(newmark.u(),
-                  base.value_on_all(newmark.u())[0] - base_static[0],
-                  u_static.vec());
-    for (int i = 0; i < dim; ++i)
-    {
-      hist[2 * dim * k + i] = c[i];
-      hist[2 * dim * k + dim + i] = b[i];
-    }
-    if (k % s.output_every == 0)
-    {
-      linalg::to_function(newmark.u(), u_fn);
-      writer.write(u_fn, s_field, t,
-                   {cm.kappa_t(), cm.kappa_c(), cm.strain_rate()});
-    }
-  };
-  auto checkpoint = [&](int k)
-  {
-    CheckpointData data;
-    data.step = k;
-    data.arrays = cm.save();
-    data.arrays["u"] = linalg::owned_values(newmark.u());
-    data.arrays["v"] = linalg::owned_values(newmark.v());
-    data.arrays["a"] = linalg::owned_values(newmark.a());
-    data.arrays["f_int"] = linalg::owned_values(newmark.f_int());
-    data.arrays["history"] = hist;
-    data.arrays["newton"] = stats;
-    auto span_vec = [](std::span<const double> x)
-    { return std::vector<double>(x.begin(), x.end()); };
-    data.arrays["env_max"] = span_vec(envelope.max_principal());
-    data.arrays["env_t_max"] = span_vec(envelope.max_times());
-    data.arrays["env_min"] = span_vec(envelope.min_principal());
-    data.arrays["env_t_min"] = span_vec(envelope.min_times());
-    data.arrays["rate_max"] = rate_env.max;
-    data.arrays["rate_t"] = rate_env.t;
-    data.arrays["kt_rate_max"] = kt_rate_env.max;
-    data.arrays["kt_rate_t"] = kt_rate_env.t;
-    data.arrays["syy_max"] = syy_max.max;
-    data.arrays["syy_t_max"] = syy_max.t;
-    data.arrays["syy_min"] = syy_min.max;
-    data.arrays["syy_t_min"] = syy_min.t;
-    data.arrays["face_u"] = face_u.save();
-    write_checkpoint(comm, ckpt_dir, data, print);
-  };
-
-  results::set_stage("time history");
-  results::print(comm, "time history: " + std::to_string(n) + " steps of " +
-                           std::to_string(dt) + " s, factorisation " +
-                           newmark.solver().name());
-  if (k0 == 0)
-    record_state(0, 0.0);
-  StopSignals signals;
-  results::Progress progress(comm, n - k0);
-  // count the time history only
-  system.reset_counts();
-  const auto loop_start = Clock::now();
-  for (int k = k0 + 1; k <= n; ++k)
-  {
-    set_load(k);
-    dynamics::StepReport rep;
-    try
-    {
-      rep = newmark.step(f.vec());
-    }
-    catch (const dynamics::StepFailure& e)
-    {
-      throw dynamics::StepFailure("step " + std::to_string(k) + " (t = " +
-                                  std::to_string(k * dt) + " s): " + e.what());
-    }
-    stats[0] += rep.iterations;
-    stats[1] += rep.tangent_factorizations;
-    stats[2] += rep.cuts;
-    stats[3] = std::max(stats[3], double(rep.iterations));
-    stats[4] = std::max(stats[4], double(system.accepted.inelastic));
-    stats[5] += rep.krylov_iterations;
-    stats[6] += rep.seconds_residual;
-    stats[7] += rep.seconds_tangent;
-    stats[8] += rep.seconds_factorization;
-    stats[9] += rep.seconds_solve;
-    stats[10] += static_cast<double>(system.substepped);
-    stats[11] += static_cast<double>(system.return_maps);
-    stats[12] += static_cast<double>(system.local_iterations);
-    stats[13] += static_cast<double>(system.returned_points);
-    stats[14] += system.return_map_seconds;
-    stats[15] += rep.extrapolation_error * rep.extrapolation_error;
-    if (rep.extrapolation_error > stats[16])
-    {
-      stats[16] = rep.extrapolation_error;
-      stats[17] = k * dt;
-    }
-    system.reset_counts();
-    record_state(k, k * dt);
-    progress.report(
-        k - k0, k * dt,
-        "  Newton " + std::to_string(rep.iterations) +
-            (rep.tangent_factorizations
-                 ? " (" + std::to_string(rep.tangent_factorizations) +
-                       " tangents)"
-                 : std::string()) +
-            (rep.cuts ? ", " + std::to_string(rep.cuts) + " cuts"
-                      : std::string()) +
-            ", inelastic points " + std::to_string(system.accepted.inelastic));
-    signals.checkpoint_or_stop(comm, s, k, n, checkpoint, ckpt_dir);
-  }
-  const double loop_seconds = seconds_since(loop_start);
+  const auto& envelope = stresses.envelope();
   results::set_stage("writing outputs");
-  results::reduce_history(comm, hist);
+  const std::vector<double>& hist = points.reduce(comm);
   const json crest_summary =
       write_crest_history(comm, hist, dim, n, dt, crest_static, base_static,
                           true, out_dir / "crest.csv");
@@ -497,9 +381,10 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   // Envelopes: stresses, and the state variables as cell maxima.
   std::vector<double> rate_all(cm.strain_rate().size(), 0.0),
       kt_rate_all(rate_all.size(), 0.0);
-  std::copy(rate_env.max.begin(), rate_env.max.end(), rate_all.begin());
-  std::copy(kt_rate_env.max.begin(), kt_rate_env.max.end(),
-            kt_rate_all.begin());
+  std::copy(concrete_state.rate().max.begin(), concrete_state.rate().max.end(),
+            rate_all.begin());
+  std::copy(concrete_state.kt_rate().max.begin(),
+            concrete_state.kt_rate().max.end(), kt_rate_all.begin());
   results::write_envelopes(fe, envelope, region_cells(model, tags::dam),
                            out_dir / "envelopes.xdmf", Sq, false,
                            {{"kappa_t", cm.kappa_t()},
@@ -514,11 +399,12 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
     std::vector<double> syy_hi(n_pts), syy_lo(n_pts);
     for (std::int32_t i = 0; i < n_pts; ++i)
     {
-      syy_hi[i] = 1e-6 * syy_max.max[i];
-      syy_lo[i] = -1e-6 * syy_min.max[i];
+      syy_hi[i] = 1e-6 * concrete_state.syy_max().max[i];
+      syy_lo[i] = -1e-6 * concrete_state.syy_min().max[i];
     }
     write_dam_points(comm, envelope, in_dam,
-                     {&kt, &kc, &rate_env.max, &rate_env.t, &kt_rate_env.max,
+                     {&kt, &kc, &concrete_state.rate().max,
+                      &concrete_state.rate().t, &concrete_state.kt_rate().max,
                       &syy_hi, &syy_lo},
                      out_dir / "dam_points.csv");
   }
@@ -526,18 +412,21 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   kt_final.update(cm.kappa_t(), n * dt);
   const auto kt_max = scalar_extreme(comm, kt_final, cm.coordinates(), in_dam);
   const auto rate_max =
-      scalar_extreme(comm, rate_env, cm.coordinates(), in_dam);
-  const auto syy_hi = scalar_extreme(comm, syy_max, cm.coordinates(), in_dam);
-  const auto syy_lo = scalar_extreme(comm, syy_min, cm.coordinates(), in_dam);
+      scalar_extreme(comm, concrete_state.rate(), cm.coordinates(), in_dam);
+  const auto syy_hi =
+      scalar_extreme(comm, concrete_state.syy_max(), cm.coordinates(), in_dam);
+  const auto syy_lo =
+      scalar_extreme(comm, concrete_state.syy_min(), cm.coordinates(), in_dam);
 
   // The Newton statistics cover every step (restored at a restart).
   const int steps_all = std::max(1, n);
+  const NewtonTotals& nt = stepper.totals();
   const auto& p = concrete.params;
-  json summary =
-      seismic_summary(comm, fe, s, modal, added != nullptr, crest.node(),
-                      envelope, faces, newmark.solver().name(),
-                      {static_seconds, modal.seconds,
-                       newmark.solver().factor_seconds(), loop_seconds, k0});
+  json summary = seismic_summary(
+      comm, fe, s, modal, added != nullptr, points.crest().node(), envelope,
+      faces, stepper.solver_name(),
+      {static_seconds, modal.seconds, stepper.factor_seconds(),
+       run.loop_seconds, run.restarted_from_step});
   summary.update(crest_summary);
   summary["concrete"] = {
       {"model", to_string(concrete.kind)},
@@ -584,41 +473,42 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
       {"extrapolated_predictor", newton_settings.extrapolated_predictor},
       {"static_iterations", static_stage.iterations},
       {"static_cuts", static_stage.cuts},
-      {"iterations", stats[0]},
-      {"iterations_per_step", stats[0] / steps_all},
-      {"max_iterations_in_a_step", stats[3]},
-      {"tangent_factorizations", stats[1]},
-      {"krylov_iterations", stats[5]},
-      {"substepped_point_updates", stats[10]},
-      {"return_maps", stats[11]},
-      {"local_newton_iterations", stats[12]},
+      {"iterations", nt.iterations},
+      {"iterations_per_step", nt.iterations / steps_all},
+      {"max_iterations_in_a_step", nt.max_iterations_in_a_step},
+      {"tangent_factorizations", nt.tangent_factorizations},
+      {"krylov_iterations", nt.krylov_iterations},
+      {"substepped_point_updates", nt.substepped},
+      {"return_maps", nt.return_maps},
+      {"local_newton_iterations", nt.local_iterations},
       // In-run throughput of the points that left the elastic fast path
       // (plane stress: all return maps of a point's sigma_zz iteration and
       // its tangent), per core.
-      {"returned_points", stats[13]},
+      {"returned_points", nt.returned_points},
       {"returned_points_per_core_second",
-       stats[14] > 0.0 ? stats[13] / stats[14] : 0.0},
+       nt.return_map_seconds > 0.0 ? nt.returned_points / nt.return_map_seconds
+                                   : 0.0},
       {"seconds",
-       {{"residual", stats[6]},
-        {"tangent_assembly", stats[7]},
-        {"factorization", stats[8]},
-        {"direction_solves", stats[9]},
-        {"return_maps_core_seconds", stats[14]}}},
-      {"step_cuts", stats[2]},
-      {"max_inelastic_points", stats[4]}};
+       {{"residual", nt.seconds_residual},
+        {"tangent_assembly", nt.seconds_tangent},
+        {"factorization", nt.seconds_factorization},
+        {"direction_solves", nt.seconds_solve},
+        {"return_maps_core_seconds", nt.return_map_seconds}}},
+      {"step_cuts", nt.cuts},
+      {"max_inelastic_points", nt.max_inelastic_points}};
   if (concrete.implex)
   {
     // How far the implicit stresses of the IMPL-EX steps are from
     // equilibrium, in the units of the Newton tolerance (README).
     summary["implex_equilibrium_error"] = {
-        {"rms", std::sqrt(stats[15] / steps_all)},
-        {"max", stats[16]},
-        {"t_of_max", stats[17]}};
+        {"rms", std::sqrt(nt.implex_error_squares / steps_all)},
+        {"max", nt.implex_error_max},
+        {"t_of_max", nt.implex_error_time}};
   }
   summary["wall_seconds"] = seconds_since(wall_start);
   print_summary_line(comm, summary,
                      ", Newton iterations per step " +
-                         std::to_string(stats[0] / steps_all));
+                         std::to_string(nt.iterations / steps_all));
   return summary;
 }
 } // namespace damseis::analysis

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "concrete_settings.h"
+#include "linear_seismic.h"
 #include "seismic_settings.h"
 #include <damseis/fem/elastic_model.h>
 #include <filesystem>
@@ -15,22 +16,30 @@
 
 namespace damseis::analysis
 {
+/// The concrete of a nonlinear run: the HTC model of the dam region, the
+/// elastic materials of the other regions (they stay linear), and the 2D
+/// plane mode.
+struct ConcreteBulk
+{
+  ConcreteSettings concrete;
+  std::map<int, fem::Material> elastic;
+  fem::PlaneMode plane = fem::PlaneMode::plane_strain;
+};
+
 /// Runs the analysis on `fe` (fixed boundaries set; its materials are the
-/// initial elastic ones and must match `concrete.params` in the dam region)
-/// and writes into `out_dir` what run_linear_seismic writes, plus
-/// dam_points.csv (per dam quadrature point: envelopes, equivalent
-/// viscoplastic strains, maximum strain rates). `elastic` gives the
-/// materials of the other regions (they stay linear elastic);
-/// `extra_static_loads` (full-space vectors, zero at fixed dofs) are applied
-/// with the reservoir in the static stage (silt, uplift). Checkpoints and
-/// signals as in run_linear_seismic. Collective.
+/// initial elastic ones and must match `bulk.concrete.params` in the dam
+/// region) and writes into `folder.dir` what run_linear_seismic writes,
+/// plus dam_points.csv (per dam quadrature point: envelopes, equivalent
+/// viscoplastic strains, maximum strain rates). `extra_static_loads`
+/// (full-space vectors, zero at fixed dofs) are applied with the reservoir
+/// in the static stage (silt, uplift). Checkpoints and signals as in
+/// run_linear_seismic. Collective.
 ///
 /// Throws dynamics::StepFailure if a step cannot be solved (the outputs
 /// written so far stay; no unconverged step is accepted).
-nlohmann::json run_nonlinear_seismic(
-    fem::ElasticModel& fe, const SeismicSettings& settings,
-    const ConcreteSettings& concrete,
-    const std::map<int, fem::Material>& elastic, fem::PlaneMode plane,
-    const std::vector<Vec>& extra_static_loads,
-    const std::filesystem::path& out_dir, const std::string& case_text);
+nlohmann::json run_nonlinear_seismic(fem::ElasticModel& fe,
+                                     const SeismicSettings& settings,
+                                     const ConcreteBulk& bulk,
+                                     const std::vector<Vec>& extra_static_loads,
+                                     const RunFolder& folder);
 } // namespace damseis::analysis

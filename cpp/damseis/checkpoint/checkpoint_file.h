@@ -1,7 +1,7 @@
 // The bytes of a checkpoint: the per-rank state file and the checkpoint.json
 // that points to it. Pure functions on strings (no files, no MPI), so that
 // damaged checkpoints can be tested and fuzzed without a model;
-// analysis/checkpoint does the collective reading and writing.
+// engine/checkpoint does the collective reading and writing.
 #pragma once
 
 #include <cstdint>

@@ -44,6 +44,16 @@ std::vector<double> owned_values(Vec x)
   return v;
 }
 
+void read_owned_values(Vec x, std::vector<double>& out)
+{
+  PetscInt n = 0;
+  VecGetLocalSize(x, &n);
+  const double* a = nullptr;
+  VecGetArrayRead(x, &a);
+  out.assign(a, a + n);
+  VecRestoreArrayRead(x, &a);
+}
+
 void set_owned_values(Vec x, const std::vector<double>& v)
 {
   PetscInt n = 0;

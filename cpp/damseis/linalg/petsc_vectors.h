@@ -14,5 +14,8 @@ dolfinx::la::petsc::Vector row_vector(Mat A);
 /// Copies `x` (owned values) into the Function `u` and updates its ghosts.
 void to_function(Vec x, dolfinx::fem::Function<double>& u);
 std::vector<double> owned_values(Vec x);
+/// The owned values of `x` into `out` (resized; no allocation once large
+/// enough).
+void read_owned_values(Vec x, std::vector<double>& out);
 void set_owned_values(Vec x, const std::vector<double>& v);
 } // namespace damseis::linalg

@@ -4,7 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace damseis::analysis
+namespace damseis::engine
 {
 namespace
 {
@@ -158,4 +158,4 @@ void restore_collectively(MPI_Comm comm, const std::filesystem::path& dir,
         "); remove it (or set run.restart = false) to start over");
   }
 }
-} // namespace damseis::analysis
+} // namespace damseis::engine

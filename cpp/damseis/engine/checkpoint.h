@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace damseis::analysis
+namespace damseis::engine
 {
 using checkpoint::case_fingerprint;
 using checkpoint::CheckpointData;
@@ -41,4 +41,4 @@ const std::vector<double>& checkpoint_array(const CheckpointData& data,
 /// input::InputError on all of them. Collective.
 void restore_collectively(MPI_Comm comm, const std::filesystem::path& dir,
                           const std::function<void()>& restore);
-} // namespace damseis::analysis
+} // namespace damseis::engine

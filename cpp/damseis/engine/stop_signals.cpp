@@ -1,8 +1,7 @@
 #include "stop_signals.h"
-#include "linear_seismic.h"
 #include <csignal>
 
-namespace damseis::analysis
+namespace damseis::engine
 {
 namespace
 {
@@ -34,12 +33,12 @@ bool StopSignals::requested(MPI_Comm comm, bool forced) const
 }
 
 void StopSignals::checkpoint_or_stop(
-    MPI_Comm comm, const SeismicSettings& s, int k, int n,
+    MPI_Comm comm, const CheckpointRule& rule, int k, int n,
     const std::function<void(int)>& checkpoint,
     const std::filesystem::path& ckpt_dir) const
 {
-  const bool stop = requested(comm, k == s.stop_at_step);
-  if (stop || (s.checkpoint_every > 0 && k % s.checkpoint_every == 0 && k < n))
+  const bool stop = requested(comm, k == rule.stop_at_step);
+  if (stop || (rule.every > 0 && k % rule.every == 0 && k < n))
     checkpoint(k);
   if (stop)
   {
@@ -48,4 +47,4 @@ void StopSignals::checkpoint_or_stop(
                       "; resume with --set run.restart=true");
   }
 }
-} // namespace damseis::analysis
+} // namespace damseis::engine

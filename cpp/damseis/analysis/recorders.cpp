@@ -1,0 +1,164 @@
+#include "recorders.h"
+#include <damseis/engine/checkpoint.h>
+#include <damseis/linalg/petsc_vectors.h>
+
+namespace damseis::analysis
+{
+namespace
+{
+std::vector<double> copy_of(std::span<const double> x)
+{
+  return std::vector<double>(x.begin(), x.end());
+}
+} // namespace
+
+FullDisplacement::FullDisplacement(const engine::Stepper& stepper, Mat tie)
+    : _stepper(stepper), _tie(tie)
+{
+  if (_tie)
+  {
+    _u = linalg::row_vector(_tie);
+    _work = linalg::row_vector(_tie);
+  }
+}
+
+void FullDisplacement::record(int, double)
+{
+  if (_tie)
+    MatMult(_tie, _stepper.u(), _u.vec());
+}
+
+Vec FullDisplacement::vec() const
+{
+  return _tie ? _u.vec() : _stepper.u();
+}
+
+Vec FullDisplacement::full(Vec x) const
+{
+  if (!_tie)
+    return x;
+  MatMult(_tie, x, _work.vec());
+  return _work.vec();
+}
+
+StressRecorder::StressRecorder(results::StressEnvelope envelope,
+                               std::function<std::span<const double>()> stress)
+    : _envelope(std::move(envelope)), _stress(std::move(stress))
+{
+}
+
+void StressRecorder::record(int, double t)
+{
+  _last = _stress();
+  const std::size_t owned =
+      _envelope.max_principal().size() * _envelope.components();
+  _envelope.update(_last.first(owned), t);
+}
+
+void StressRecorder::save(engine::Arrays& arrays) const
+{
+  arrays["env_max"] = copy_of(_envelope.max_principal());
+  arrays["env_t_max"] = copy_of(_envelope.max_times());
+  arrays["env_min"] = copy_of(_envelope.min_principal());
+  arrays["env_t_min"] = copy_of(_envelope.min_times());
+}
+
+void StressRecorder::restore(const engine::CheckpointData& d)
+{
+  using engine::checkpoint_array;
+  _envelope.restore(
+      checkpoint_array(d, "env_max"), checkpoint_array(d, "env_t_max"),
+      checkpoint_array(d, "env_min"), checkpoint_array(d, "env_t_min"));
+}
+
+PointHistories::PointHistories(const dolfinx::fem::FunctionSpace& V,
+                               const std::array<double, 3>& crest_point,
+                               const std::array<double, 3>& base_point,
+                               int steps, const FullDisplacement& u)
+    : _crest(V, crest_point), _base(V, base_point),
+      _dim(V.dofmap()->index_map_bs()), _u(u),
+      _hist(2 * _dim * (steps + 1), 0.0)
+{
+}
+
+void PointHistories::record(int k, double)
+{
+  const auto c = _crest.value(_u.vec()), b = _base.value(_u.vec());
+  for (int i = 0; i < _dim; ++i)
+  {
+    _hist[2 * _dim * k + i] = c[i];
+    _hist[2 * _dim * k + _dim + i] = b[i];
+  }
+}
+
+void PointHistories::save(engine::Arrays& arrays) const
+{
+  arrays["history"] = _hist;
+}
+
+void PointHistories::restore(const engine::CheckpointData& d)
+{
+  _hist = engine::checkpoint_array(d, "history", _hist.size());
+}
+
+const std::vector<double>& PointHistories::reduce(MPI_Comm comm)
+{
+  results::reduce_history(comm, _hist);
+  return _hist;
+}
+
+FaceDisplacementRecorder::FaceDisplacementRecorder(
+    const dolfinx::fem::FunctionSpace& V,
+    const dolfinx::mesh::MeshTags<std::int32_t>& facet_tags, int tag,
+    const results::PointProbe& base, const FullDisplacement& u, Vec reference,
+    double base_reference)
+    : _envelope(V, facet_tags, tag), _base(base), _u(u), _reference(reference),
+      _base_reference(base_reference)
+{
+}
+
+void FaceDisplacementRecorder::record(int, double)
+{
+  const Vec u = _u.vec();
+  _envelope.update(u, _base.value_on_all(u)[0] - _base_reference, _reference);
+}
+
+void FaceDisplacementRecorder::save(engine::Arrays& arrays) const
+{
+  arrays["face_u"] = _envelope.save();
+}
+
+void FaceDisplacementRecorder::restore(const engine::CheckpointData& d)
+{
+  _envelope.restore(engine::checkpoint_array(d, "face_u"));
+}
+
+FieldRecorder::FieldRecorder(fem::ElasticModel& fe,
+                             std::filesystem::path out_dir, int every,
+                             std::function<Vec()> displacement,
+                             const StressRecorder& stresses, Extras extras)
+    : _fe(fe), _dir(std::move(out_dir)), _every(every),
+      _displacement(std::move(displacement)), _stresses(stresses),
+      _extras(std::move(extras)), _u(fe.V())
+{
+}
+
+void FieldRecorder::begin(int first_step)
+{
+  const std::string name =
+      first_step == 0
+          ? std::string("fields.xdmf")
+          : "fields_from_step" + std::to_string(first_step) + ".xdmf";
+  _writer.emplace(_fe, _dir / name, _extras.stress_space, _extras.names);
+}
+
+void FieldRecorder::record(int k, double t)
+{
+  if (k % _every != 0)
+    return;
+  linalg::to_function(_displacement(), _u);
+  _writer->write(_u, _stresses.stress(), t,
+                 _extras.values ? _extras.values()
+                                : std::vector<std::span<const double>>{});
+}
+} // namespace damseis::analysis

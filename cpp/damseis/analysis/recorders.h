@@ -1,0 +1,143 @@
+// The observers every seismic analysis plugs into the engine: the
+// full-space displacement of a step, the stress envelopes, the crest and
+// base histories, the displacement envelope along a face and the XDMF
+// fields. Each saves and restores its recording in checkpoints.
+#pragma once
+
+#include <damseis/engine/parts.h>
+#include <damseis/fem/elastic_model.h>
+#include <damseis/results/displacement_envelope.h>
+#include <damseis/results/field_writer.h>
+#include <damseis/results/point_probe.h>
+#include <damseis/results/stress_envelope.h>
+#include <dolfinx/fem/Function.h>
+#include <dolfinx/la/petsc.h>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <span>
+
+namespace damseis::analysis
+{
+/// The displacement of all dofs at the step, u = P u_r with tied joints (P
+/// = `tie`) or the stepper's u: computed once per step for the recorders
+/// added after it.
+class FullDisplacement : public engine::Observer
+{
+public:
+  FullDisplacement(const engine::Stepper& stepper, Mat tie);
+  void record(int, double) override;
+  /// The current full-space displacement.
+  Vec vec() const;
+  /// The full-space image of a system vector (a work vector with ties).
+  Vec full(Vec x) const;
+
+private:
+  const engine::Stepper& _stepper;
+  Mat _tie;
+  dolfinx::la::petsc::Vector _u{nullptr, false}, _work{nullptr, false};
+};
+
+/// Envelopes of the principal stresses at every stress point: `stress`
+/// gives the stress of the step (owned points first, the envelope's
+/// layout), computed once per step and kept for later recorders.
+class StressRecorder : public engine::Observer
+{
+public:
+  StressRecorder(results::StressEnvelope envelope,
+                 std::function<std::span<const double>()> stress);
+  void record(int k, double t) override;
+  void save(engine::Arrays& arrays) const override;
+  void restore(const engine::CheckpointData& data) override;
+  /// The stress of the last recorded step.
+  std::span<const double> stress() const { return _last; }
+  const results::StressEnvelope& envelope() const { return _envelope; }
+
+private:
+  results::StressEnvelope _envelope;
+  std::function<std::span<const double>()> _stress;
+  std::span<const double> _last;
+};
+
+/// Displacement histories at the crest and base points (the nodes nearest
+/// to them), per step: crest then base components, on the owning rank
+/// until reduce().
+class PointHistories : public engine::Observer
+{
+public:
+  PointHistories(const dolfinx::fem::FunctionSpace& V,
+                 const std::array<double, 3>& crest_point,
+                 const std::array<double, 3>& base_point, int steps,
+                 const FullDisplacement& u);
+  void record(int k, double t) override;
+  void save(engine::Arrays& arrays) const override;
+  void restore(const engine::CheckpointData& data) override;
+  /// The histories on every rank (collective; after the loop).
+  const std::vector<double>& reduce(MPI_Comm comm);
+  const results::PointProbe& crest() const { return _crest; }
+  const results::PointProbe& base() const { return _base; }
+
+private:
+  results::PointProbe _crest, _base;
+  int _dim;
+  const FullDisplacement& _u;
+  std::vector<double> _hist;
+};
+
+/// Envelope of the horizontal displacement along a tagged face relative to
+/// the base point: u - `reference` (may be null) minus the base's
+/// displacement less `base_reference`.
+class FaceDisplacementRecorder : public engine::Observer
+{
+public:
+  FaceDisplacementRecorder(
+      const dolfinx::fem::FunctionSpace& V,
+      const dolfinx::mesh::MeshTags<std::int32_t>& facet_tags, int tag,
+      const results::PointProbe& base, const FullDisplacement& u,
+      Vec reference = nullptr, double base_reference = 0.0);
+  void record(int k, double t) override;
+  void save(engine::Arrays& arrays) const override;
+  void restore(const engine::CheckpointData& data) override;
+  void write_csv(MPI_Comm comm, const std::filesystem::path& file) const
+  {
+    _envelope.write_csv(comm, file);
+  }
+
+private:
+  results::DisplacementEnvelope _envelope;
+  const results::PointProbe& _base;
+  const FullDisplacement& _u;
+  Vec _reference;
+  double _base_reference;
+};
+
+/// The time series fields.xdmf (fields_from_step<k>.xdmf after a restart
+/// from step k), every `every` steps: the displacement `displacement()`,
+/// the stresses of `stresses` and the named extra point scalars.
+class FieldRecorder : public engine::Observer
+{
+public:
+  struct Extras
+  {
+    std::shared_ptr<const dolfinx::fem::FunctionSpace> stress_space;
+    std::vector<std::string> names;
+    std::function<std::vector<std::span<const double>>()> values;
+  };
+  FieldRecorder(fem::ElasticModel& fe, std::filesystem::path out_dir, int every,
+                std::function<Vec()> displacement,
+                const StressRecorder& stresses, Extras extras = {});
+  void begin(int first_step) override;
+  void record(int k, double t) override;
+
+private:
+  fem::ElasticModel& _fe;
+  std::filesystem::path _dir;
+  int _every;
+  std::function<Vec()> _displacement;
+  const StressRecorder& _stresses;
+  Extras _extras;
+  std::optional<results::FieldWriter> _writer;
+  dolfinx::fem::Function<double> _u;
+};
+} // namespace damseis::analysis

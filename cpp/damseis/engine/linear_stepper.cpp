@@ -1,0 +1,66 @@
+#include "linear_stepper.h"
+#include <damseis/linalg/petsc_vectors.h>
+
+namespace damseis::engine
+{
+namespace
+{
+using dolfinx::la::petsc::Vector;
+const std::array<const char*, 3> state_names = {"u", "v", "a"};
+} // namespace
+
+LinearStepper::LinearStepper(Mat M, Mat K, dynamics::RayleighDamping damping,
+                             dynamics::TimeScheme scheme,
+                             linalg::Factorization factorization,
+                             const std::vector<Mat>& extra_damping)
+    : _K(K), _newmark(M, K, damping, scheme, factorization, extra_damping),
+      _restored{Vector(nullptr, false), Vector(nullptr, false),
+                Vector(nullptr, false)}
+{
+}
+
+Vec LinearStepper::create_vector() const
+{
+  Vec x;
+  MatCreateVecs(_K, &x, nullptr);
+  VecSet(x, 0.0);
+  return x;
+}
+
+void LinearStepper::start(Vec u0, Vec v0, Vec a0, Vec f0)
+{
+  Vector zero(create_vector(), false);
+  _newmark.set_state(u0 ? u0 : zero.vec(), v0 ? v0 : zero.vec(), a0, f0);
+}
+
+dynamics::StepReport LinearStepper::step(Vec f)
+{
+  _newmark.step(f);
+  return {};
+}
+
+void LinearStepper::save(Arrays& arrays) const
+{
+  const std::array<Vec, 3> x = {u(), v(), a()};
+  for (int i = 0; i < 3; ++i)
+    arrays[state_names[i]] = linalg::owned_values(x[i]);
+}
+
+void LinearStepper::restore(const CheckpointData& data)
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    _restored[i] = Vector(create_vector(), false);
+    linalg::set_owned_values(_restored[i].vec(),
+                             checkpoint_array(data, state_names[i]));
+  }
+}
+
+void LinearStepper::resume(Vec f)
+{
+  _newmark.set_state(_restored[0].vec(), _restored[1].vec(), _restored[2].vec(),
+                     f);
+  for (auto& x : _restored)
+    x = Vector(nullptr, false);
+}
+} // namespace damseis::engine

@@ -1,0 +1,43 @@
+// The stepper of a linear model: HHT/Newmark (dynamics::LinearNewmark) with
+// its effective matrix factorised once.
+#pragma once
+
+#include "parts.h"
+#include <array>
+#include <damseis/dynamics/newmark.h>
+#include <dolfinx/la/petsc.h>
+
+namespace damseis::engine
+{
+class LinearStepper : public Stepper
+{
+public:
+  /// M, K and the extra damping matrices: see dynamics::LinearNewmark. The
+  /// initial displacement (start with u0 null) is zero.
+  LinearStepper(Mat M, Mat K, dynamics::RayleighDamping damping,
+                dynamics::TimeScheme scheme,
+                linalg::Factorization factorization,
+                const std::vector<Mat>& extra_damping = {});
+
+  Vec create_vector() const override;
+  void start(Vec u0, Vec v0, Vec a0, Vec f0) override;
+  dynamics::StepReport step(Vec f) override;
+  Vec u() const override { return _newmark.u(); }
+  Vec v() const override { return _newmark.v(); }
+  Vec a() const override { return _newmark.a(); }
+  void save(Arrays& arrays) const override;
+  void restore(const CheckpointData& data) override;
+  void resume(Vec f) override;
+  std::string solver_name() const override { return _newmark.solver().name(); }
+  double factor_seconds() const override
+  {
+    return _newmark.solver().factor_seconds();
+  }
+
+private:
+  Mat _K;
+  dynamics::LinearNewmark _newmark;
+  /// u, v, a read from a checkpoint until resume().
+  std::array<dolfinx::la::petsc::Vector, 3> _restored;
+};
+} // namespace damseis::engine
