@@ -13,55 +13,67 @@
 
 namespace damseis::analysis
 {
-nlohmann::json run_arch_dam_analysis(MPI_Comm comm, const ArchDamConfig& cfg,
-                                     const std::filesystem::path& out_dir,
-                                     const std::string& case_text)
+ArchDamModel arch_dam_model(MPI_Comm comm, const ArchDamConfig& cfg)
 {
   print_size_estimate(comm, geometry::estimated_cells(cfg.geometry), 3,
                       cfg.order, cfg.seismic.steps);
   results::set_stage("meshing");
-  auto arch = geometry::build_arch_dam(comm, cfg.geometry);
+  ArchDamModel m{geometry::build_arch_dam(comm, cfg.geometry)};
+  const auto& arch = m.mesh;
   results::print(
       comm, "arch dam mesh: " + std::to_string(arch.num_cells) + " cells (" +
                 std::to_string(arch.num_dam_cells) + " in the dam), " +
                 std::to_string(arch.joints.size()) + " joints, built in " +
                 std::to_string(arch.total_seconds) + " s");
-  fem::ElasticModel fe(
+  m.fe = std::make_unique<fem::ElasticModel>(
       arch.model, cfg.order,
-      {{tags::dam, cfg.concrete}, {tags::foundation, cfg.rock}});
+      std::map<int, fem::Material>{{tags::dam, cfg.concrete},
+                                   {tags::foundation, cfg.rock}});
   // Massless foundation fixed on its far boundaries.
-  fe.fix({tags::foundation_bottom, tags::foundation_sides,
-          tags::foundation_upstream, tags::foundation_downstream});
+  m.fe->fix({tags::foundation_bottom, tags::foundation_sides,
+             tags::foundation_upstream, tags::foundation_downstream});
 
+  // Bonded joints: the two sides' coincident dofs tied.
   std::vector<std::pair<int, int>> joint_tags;
   for (const auto& j : arch.joints)
     joint_tags.emplace_back(j.tag_side1, j.tag_side2);
-  dolfinx::la::petsc::Matrix tie(
-      joint_tags.empty()
-          ? nullptr
-          : fem::tie_prolongation(*fe.V(), *arch.model.facet_tags, joint_tags),
-      false);
+  if (!joint_tags.empty())
+  {
+    m.tie = dolfinx::la::petsc::Matrix(
+        fem::tie_prolongation(*m.fe->V(), *arch.model.facet_tags, joint_tags),
+        false);
+  }
 
   // Singular lines: where the faces meet the rock.
-  SeismicSettings seismic = cfg.seismic;
+  m.seismic = cfg.seismic;
   const int faces[3] = {tags::upstream_face, tags::upstream_wetted,
                         tags::downstream_face};
-  seismic.singular_points =
+  m.seismic.singular_points =
       results::meeting_points(arch.model, faces, tags::dam_base);
-  seismic.singular_where =
+  m.seismic.singular_where =
       "the mesh nodes where the upstream and downstream faces meet the rock";
-  nlohmann::json summary =
-      run_linear_seismic(fe, seismic, {}, {out_dir, case_text}, tie.mat());
+  return m;
+}
+
+std::unique_ptr<SeismicAnalysis>
+arch_dam_seismic_analysis(ArchDamModel& model, const RunFolder& folder)
+{
+  return linear_seismic_analysis(*model.fe, model.seismic, {}, folder,
+                                 model.tie.mat());
+}
+
+nlohmann::json arch_dam_results(MPI_Comm comm, const ArchDamConfig& cfg,
+                                const ArchDamModel& model,
+                                nlohmann::json summary,
+                                const std::filesystem::path& out_dir)
+{
+  const auto& arch = model.mesh;
   summary["analysis"] = "arch dam, linear elastic, massless foundation";
-  summary["joints"] = {{"count", arch.joints.size()},
-                       {"model", "bonded"},
-                       {"pairs", [&]
-                        {
-                          std::size_t n = 0;
-                          for (const auto& j : arch.joints)
-                            n += j.size();
-                          return n;
-                        }()}};
+  std::size_t pairs = 0;
+  for (const auto& j : arch.joints)
+    pairs += j.size();
+  summary["joints"] = {
+      {"count", arch.joints.size()}, {"model", "bonded"}, {"pairs", pairs}};
   summary["mesh_seconds"] = arch.total_seconds;
   write_summary_and_plots(comm, summary, out_dir, cfg.seismic.plots,
                           "plot_arch_dam.py");

@@ -1,18 +1,44 @@
-// The linear seismic analysis of a 3D arch dam on a massless foundation
-// (demo `arch_dam`).
+// The seismic analysis of a 3D arch dam on a massless foundation (demo
+// `arch_dam`), in the pieces its main.cpp composes: the model, the linear
+// analysis with bonded joints, the results.
 #pragma once
 
 #include "arch_dam_case.h"
+#include "seismic_analysis.h"
+#include <damseis/fem/elastic_model.h>
+#include <damseis/geometry/arch_mesh.h>
+#include <dolfinx/la/petsc.h>
 #include <filesystem>
+#include <memory>
 #include <mpi.h>
 #include <nlohmann/json.hpp>
 
 namespace damseis::analysis
 {
-/// Builds the dam, canyon and foundation, ties the joints (bonded), runs the
-/// linear seismic analysis and writes its results into `out_dir`, with
-/// summary.json and the plots. Returns the summary.
-nlohmann::json run_arch_dam_analysis(MPI_Comm comm, const ArchDamConfig& config,
-                                     const std::filesystem::path& out_dir,
-                                     const std::string& case_text);
+/// An arch dam ready to analyse: dam, canyon and foundation meshed, the
+/// materials, the foundation fixed on its far boundaries, the joints tied
+/// (bonded: u = P u_r), and the seismic settings with the singular lines
+/// where the faces meet the rock.
+struct ArchDamModel
+{
+  geometry::ArchModel mesh;
+  std::unique_ptr<fem::ElasticModel> fe;
+  dolfinx::la::petsc::Matrix tie{nullptr, false};
+  SeismicSettings seismic;
+};
+
+/// Prints the size estimate, meshes (gmsh, rank 0) and builds the model.
+ArchDamModel arch_dam_model(MPI_Comm comm, const ArchDamConfig& cfg);
+
+/// The linear analysis of the model (joints bonded).
+std::unique_ptr<SeismicAnalysis>
+arch_dam_seismic_analysis(ArchDamModel& model, const RunFolder& folder);
+
+/// Adds the dam's entries to the summary, writes summary.json and the plots
+/// (with the model's pictures: model.xdmf, mesh_model.png, mesh_joints.png);
+/// returns the summary.
+nlohmann::json arch_dam_results(MPI_Comm comm, const ArchDamConfig& cfg,
+                                const ArchDamModel& model,
+                                nlohmann::json summary,
+                                const std::filesystem::path& out_dir);
 } // namespace damseis::analysis

@@ -32,52 +32,74 @@ using dolfinx::la::petsc::Matrix;
 using dolfinx::la::petsc::Vector;
 using nlohmann::json;
 using Clock = std::chrono::steady_clock;
-} // namespace
 
-json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
-                        const std::vector<Vec>& extra_static_loads,
-                        const RunFolder& folder, Mat tie)
+/// The linear analysis: K and M (reduced to the tied unknowns with ties),
+/// Newmark with the effective matrix factorised once, stresses B u at the
+/// stress points.
+class LinearSeismicAnalysis : public SeismicAnalysis
 {
-  const std::filesystem::path& out_dir = folder.dir;
-  const std::string& case_text = folder.case_text;
-  results::set_stage("assembly");
-  const auto wall_start = Clock::now();
-  const auto model = fe.model();
-  MPI_Comm comm = model.mesh->comm();
-  int rank = 0;
-  MPI_Comm_rank(comm, &rank);
-  const int dim = fe.dim();
-  print_model_line(fe, "");
+public:
+  LinearSeismicAnalysis(fem::ElasticModel& fe, const SeismicSettings& s,
+                        const std::vector<Vec>& extra_static_loads,
+                        RunFolder folder, Mat tie);
+  void modal_stage() override;
+  void static_stage() override;
+  void time_history() override;
+  json results() override;
 
+private:
+  void add_recorders(engine::TimeHistory& history);
+
+  fem::ElasticModel& _fe;
+  const SeismicSettings& _s;
+  RunFolder _folder;
+  Mat _tie;
+  MPI_Comm _comm;
+  const Clock::time_point _wall_start = Clock::now();
+  const fem::Reservoir* _added = nullptr; ///< Westergaard added mass
+  Matrix _K{nullptr, false}, _M{nullptr, false}, _B{nullptr, false};
+  /// Static load and solution, static stresses (system layout).
+  Vector _F{nullptr, false}, _u_static{nullptr, false},
+      _s_static{nullptr, false};
+  std::optional<ModalResult> _modal;
+  double _static_seconds = 0.0;
+
+  // The time history's parts and its report.
+  std::unique_ptr<engine::LinearStepper> _stepper;
+  std::unique_ptr<FullDisplacement> _u;
+  std::unique_ptr<StressRecorder> _stresses;
+  std::unique_ptr<PointHistories> _points;
+  std::unique_ptr<FaceDisplacementRecorder> _face_u;
+  std::unique_ptr<FieldRecorder> _fields;
+  Vector _s_field{nullptr, false}, _u_static_full{nullptr, false},
+      _u_out{nullptr, false};
+  std::vector<double> _s_values;
+  std::vector<std::vector<std::int32_t>> _face_points;
+  engine::TimeHistoryReport _run;
+};
+
+LinearSeismicAnalysis::LinearSeismicAnalysis(
+    fem::ElasticModel& fe, const SeismicSettings& s,
+    const std::vector<Vec>& extra_static_loads, RunFolder folder, Mat tie)
+    : _fe(fe), _s(s), _folder(std::move(folder)), _tie(tie),
+      _comm(fe.mesh()->comm())
+{
+  results::set_stage("assembly");
+  print_model_line(fe, "");
   const bool wet = s.reservoir.depth() > 0.0;
-  const fem::Reservoir* added = s.westergaard && wet ? &s.reservoir : nullptr;
+  _added = s.westergaard && wet ? &s.reservoir : nullptr;
   // The system: all dofs, or the tied unknowns u_r with u = P u_r.
-  Matrix K(fe.assemble_stiffness(), false);
-  Matrix M(fe.assemble_mass(added), false);
+  _K = Matrix(fe.assemble_stiffness(), false);
+  _M = Matrix(fe.assemble_mass(_added), false);
   if (tie)
   {
-    K = Matrix(fem::reduce_to_tied(K.mat(), tie), false);
-    M = Matrix(fem::reduce_to_tied(M.mat(), tie), false);
+    _K = Matrix(fem::reduce_to_tied(_K.mat(), tie), false);
+    _M = Matrix(fem::reduce_to_tied(_M.mat(), tie), false);
   }
-  // The system load of a full-space load.
-  auto system_load = [&](Vec f_full) -> Vector
-  {
-    if (!tie)
-    {
-      Vec y;
-      VecDuplicate(f_full, &y);
-      VecCopy(f_full, y);
-      return Vector(y, false);
-    }
-    Vector y = linalg::column_vector(tie);
-    MatMultTranspose(tie, f_full, y.vec());
-    return y;
-  };
 
-  // Static stage: dead weight and hydrostatic pressure.
-  results::set_stage("static stage and modal analysis");
+  // The static load: dead weight, hydrostatic pressure, the extra loads.
   std::array<double, 3> g = {0, 0, 0};
-  g[dim - 1] = -s.gravity;
+  g[fe.dim() - 1] = -s.gravity;
   Vector F_full(fe.assemble_gravity(g), false);
   if (wet)
   {
@@ -86,126 +108,165 @@ json run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
   }
   for (Vec extra : extra_static_loads)
     VecAXPY(F_full.vec(), 1.0, extra);
-  Vector F = system_load(F_full.vec());
-  Vector u_static = linalg::column_vector(K.mat());
-  // K u = F is solved with the modal analysis' factors of K (one
-  // factorisation for both).
-  const double setup_seconds = seconds_since(wall_start);
-
-  // Modal analysis, with and without the added mass; Rayleigh damping.
-  Matrix M0(nullptr, false);
-  if (added)
-  {
-    M0 = Matrix(fe.assemble_mass(nullptr), false);
-    if (tie)
-      M0 = Matrix(fem::reduce_to_tied(M0.mat(), tie), false);
-  }
-  const ModalResult modal = modal_and_damping(
-      K.mat(), M.mat(), added ? M0.mat() : nullptr, s,
-      [&](KSP ksp) { KSPSolve(ksp, F.vec(), u_static.vec()); });
-  const double static_seconds = setup_seconds + modal.with_K_factors_seconds;
-  const linalg::Modes& modes = modal.modes;
-
-  // Dynamic stage: displacement relative to the base under the ground
-  // acceleration, M a + C v + K u = -M sum_c r_c a_gc(t). The added mass
-  // multiplies the total acceleration, so it is part of M here.
-  engine::LinearStepper stepper(M.mat(), K.mat(), modal.damping, s.scheme,
-                                s.factorization);
-  const GroundMotionLoad ground(fe, s, M.mat(), tie);
-
-  // Outputs: every input check has passed by now.
-  std::filesystem::create_directories(out_dir);
-  if (rank == 0)
-    std::ofstream(out_dir / "case_used.toml") << case_text;
-  FullDisplacement u(stepper, tie);
-  write_modes(
-      fe, modes, [&](Vec x) { return u.full(x); }, out_dir / "modes.xdmf");
-
-  // Recorders: stresses at the stress points (B u, with the static stress
-  // if asked) with their envelopes (dam only) and faces, the crest and base
-  // histories, in 2D the upstream face's displacement envelope, the fields.
-  Matrix B(fe.assemble_stress_operator(), false);
   if (tie)
   {
-    Mat BP;
-    MatMatMult(B.mat(), tie, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &BP);
-    B = Matrix(BP, false);
+    _F = linalg::column_vector(tie);
+    MatMultTranspose(tie, F_full.vec(), _F.vec());
   }
-  Vector s_static = linalg::row_vector(B.mat()),
-         s_field = linalg::row_vector(B.mat());
-  MatMult(B.mat(), u_static.vec(), s_static.vec());
-  std::vector<double> s_values;
-  const auto dam_cells = region_cells(model, tags::dam);
-  StressRecorder stresses(results::StressEnvelope(*fe.S(), dam_cells),
-                          [&]() -> std::span<const double>
-                          {
-                            if (s.stress_total)
-                              MatMultAdd(B.mat(), stepper.u(), s_static.vec(),
-                                         s_field.vec());
-                            else
-                              MatMult(B.mat(), stepper.u(), s_field.vec());
-                            linalg::read_owned_values(s_field.vec(), s_values);
-                            return s_values;
-                          });
-  std::vector<std::vector<std::int32_t>> face_pts;
-  for (const auto& [name, face_tags] : s.faces)
-    face_pts.push_back(
-        results::face_points(*fe.S(), *model.facet_tags, face_tags));
-  PointHistories points(*fe.V(), s.crest_point, s.base_point, s.steps, u);
-  const auto crest_static = points.crest().value_on_all(u.full(u_static.vec()));
-  const auto base_static = points.base().value_on_all(u.full(u_static.vec()));
-  std::optional<FaceDisplacementRecorder> face_u;
-  if (dim == 2 && !tie)
-    face_u.emplace(*fe.V(), *model.facet_tags, tags::upstream_face,
-                   points.base(), u);
-  Vector u_static_full = linalg::row_vector(tie ? tie : K.mat());
-  VecCopy(u.full(u_static.vec()), u_static_full.vec());
-  Vector u_out = linalg::row_vector(tie ? tie : K.mat());
-  FieldRecorder fields(
-      fe, out_dir, s.output_every,
-      [&]
-      {
-        VecCopy(u.vec(), u_out.vec());
-        if (s.stress_total)
-          VecAXPY(u_out.vec(), 1.0, u_static_full.vec());
-        return u_out.vec();
-      },
-      stresses);
+  else
+    _F = std::move(F_full);
+  _u_static = linalg::column_vector(_K.mat());
+  _static_seconds = seconds_since(_wall_start);
+}
 
-  // The time history.
+void LinearSeismicAnalysis::modal_stage()
+{
+  results::set_stage("static stage and modal analysis");
+  Matrix M0(nullptr, false);
+  if (_added)
+  {
+    M0 = Matrix(_fe.assemble_mass(nullptr), false);
+    if (_tie)
+      M0 = Matrix(fem::reduce_to_tied(M0.mat(), _tie), false);
+  }
+  // K u = F is solved with the modal analysis' factors of K.
+  _modal = modal_and_damping(
+      _K.mat(), _M.mat(), _added ? M0.mat() : nullptr, _s,
+      [&](KSP ksp) { KSPSolve(ksp, _F.vec(), _u_static.vec()); });
+  _static_seconds += _modal->with_K_factors_seconds;
+}
+
+void LinearSeismicAnalysis::static_stage()
+{
+  if (!_modal)
+    throw std::logic_error("the linear static stage uses the modal stage's "
+                           "factors: call modal_stage() first");
+  // The static stresses at the stress points.
+  _B = Matrix(_fe.assemble_stress_operator(), false);
+  if (_tie)
+  {
+    Mat BP;
+    MatMatMult(_B.mat(), _tie, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &BP);
+    _B = Matrix(BP, false);
+  }
+  _s_static = linalg::row_vector(_B.mat());
+  MatMult(_B.mat(), _u_static.vec(), _s_static.vec());
+}
+
+void LinearSeismicAnalysis::time_history()
+{
+  // Displacement relative to the base under the ground acceleration,
+  // M a + C v + K u = -M sum_c r_c a_gc(t). The added mass multiplies the
+  // total acceleration, so it is part of M here.
+  _stepper = std::make_unique<engine::LinearStepper>(
+      _M.mat(), _K.mat(), _modal->damping, _s.scheme, _s.factorization);
+  const GroundMotionLoad ground(_fe, _s, _M.mat(), _tie);
+
+  // Outputs: every input check has passed by now.
+  std::filesystem::create_directories(_folder.dir);
+  int rank = 0;
+  MPI_Comm_rank(_comm, &rank);
+  if (rank == 0)
+    std::ofstream(_folder.dir / "case_used.toml") << _folder.case_text;
+  _u = std::make_unique<FullDisplacement>(*_stepper, _tie);
+  write_modes(
+      _fe, _modal->modes, [&](Vec x) { return _u->full(x); },
+      _folder.dir / "modes.xdmf");
+
   engine::TimeHistory history(
-      comm, time_history_settings(s, fe, out_dir, case_text), stepper, ground);
-  for (engine::Observer* o :
-       std::initializer_list<engine::Observer*>{&u, &stresses, &points})
+      _comm, time_history_settings(_s, _fe, _folder.dir, _folder.case_text),
+      *_stepper, ground);
+  add_recorders(history);
+  _run = history.run();
+}
+
+void LinearSeismicAnalysis::add_recorders(engine::TimeHistory& history)
+{
+  // Stresses at the stress points (B u, with the static stress if asked),
+  // their envelopes (dam only) and faces.
+  _s_field = linalg::row_vector(_B.mat());
+  _stresses = std::make_unique<StressRecorder>(
+      results::StressEnvelope(*_fe.S(), region_cells(_fe.model(), tags::dam)),
+      [this]() -> std::span<const double>
+      {
+        if (_s.stress_total)
+          MatMultAdd(_B.mat(), _stepper->u(), _s_static.vec(), _s_field.vec());
+        else
+          MatMult(_B.mat(), _stepper->u(), _s_field.vec());
+        linalg::read_owned_values(_s_field.vec(), _s_values);
+        return _s_values;
+      });
+  const auto model = _fe.model();
+  for (const auto& [name, face_tags] : _s.faces)
+    _face_points.push_back(
+        results::face_points(*_fe.S(), *model.facet_tags, face_tags));
+  // Crest and base histories; in 2D the upstream face's displacement
+  // envelope; the fields.
+  _points = std::make_unique<PointHistories>(*_fe.V(), _s.crest_point,
+                                             _s.base_point, _s.steps, *_u);
+  if (_fe.dim() == 2 && !_tie)
+    _face_u = std::make_unique<FaceDisplacementRecorder>(
+        *_fe.V(), *model.facet_tags, tags::upstream_face, _points->base(), *_u);
+  _u_static_full = linalg::row_vector(_tie ? _tie : _K.mat());
+  VecCopy(_u->full(_u_static.vec()), _u_static_full.vec());
+  _u_out = linalg::row_vector(_tie ? _tie : _K.mat());
+  _fields = std::make_unique<FieldRecorder>(
+      _fe, _folder.dir, _s.output_every,
+      [this]
+      {
+        VecCopy(_u->vec(), _u_out.vec());
+        if (_s.stress_total)
+          VecAXPY(_u_out.vec(), 1.0, _u_static_full.vec());
+        return _u_out.vec();
+      },
+      *_stresses);
+
+  for (engine::Observer* o : std::initializer_list<engine::Observer*>{
+           _u.get(), _stresses.get(), _points.get()})
     history.observe(*o);
-  if (face_u)
-    history.observe(*face_u);
-  history.observe(fields);
-  const engine::TimeHistoryReport run = history.run();
-  const auto& envelope = stresses.envelope();
-  const int n = s.steps;
-  const double dt = s.scheme.dt;
+  if (_face_u)
+    history.observe(*_face_u);
+  history.observe(*_fields);
+}
+
+json LinearSeismicAnalysis::results()
+{
   results::set_stage("writing outputs");
-  const std::vector<double>& hist = points.reduce(comm);
-
+  const int dim = _fe.dim();
+  const std::filesystem::path& dir = _folder.dir;
+  const std::vector<double>& hist = _points->reduce(_comm);
   // Crest history relative to the base point.
+  const auto crest_static = _points->crest().value_on_all(_u_static_full.vec());
+  const auto base_static = _points->base().value_on_all(_u_static_full.vec());
   const json crest_summary =
-      write_crest_history(comm, hist, dim, n, dt, crest_static, base_static,
-                          false, out_dir / "crest.csv");
+      write_crest_history(_comm, hist, dim, _s.steps, _s.scheme.dt,
+                          crest_static, base_static, false, dir / "crest.csv");
 
-  results::write_envelopes(fe, envelope, dam_cells, out_dir / "envelopes.xdmf");
-  if (face_u)
-    face_u->write_csv(comm, out_dir / "displacement_envelope.csv");
-  const json faces = write_faces(comm, s, envelope, face_pts, dim, out_dir);
+  const auto& envelope = _stresses->envelope();
+  results::write_envelopes(_fe, envelope, region_cells(_fe.model(), tags::dam),
+                           dir / "envelopes.xdmf");
+  if (_face_u)
+    _face_u->write_csv(_comm, dir / "displacement_envelope.csv");
+  const json faces = write_faces(_comm, _s, envelope, _face_points, dim, dir);
   json summary = seismic_summary(
-      comm, fe, s, modal, added != nullptr, points.crest().node(), envelope,
-      faces, stepper.solver_name(),
-      {static_seconds, modal.seconds, stepper.factor_seconds(),
-       run.loop_seconds, run.restarted_from_step});
+      _comm, _fe, _s, *_modal, _added != nullptr, _points->crest().node(),
+      envelope, faces, _stepper->solver_name(),
+      {_static_seconds, _modal->seconds, _stepper->factor_seconds(),
+       _run.loop_seconds, _run.restarted_from_step});
   summary.update(crest_summary);
-  summary["wall_seconds"] = seconds_since(wall_start);
-  print_summary_line(comm, summary);
+  summary["wall_seconds"] = seconds_since(_wall_start);
+  print_summary_line(_comm, summary);
   return summary;
+}
+} // namespace
+
+std::unique_ptr<SeismicAnalysis>
+linear_seismic_analysis(fem::ElasticModel& fe, const SeismicSettings& s,
+                        const std::vector<Vec>& extra_static_loads,
+                        const RunFolder& folder, Mat tie)
+{
+  return std::make_unique<LinearSeismicAnalysis>(fe, s, extra_static_loads,
+                                                 folder, tie);
 }
 } // namespace damseis::analysis
 

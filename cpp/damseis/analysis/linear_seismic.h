@@ -5,25 +5,19 @@
 // crest history, summary, checkpoints).
 #pragma once
 
+#include "seismic_analysis.h"
 #include "seismic_settings.h"
 #include <damseis/fem/elastic_model.h>
 #include <filesystem>
+#include <memory>
 #include <nlohmann/json.hpp>
 
 namespace damseis::analysis
 {
-/// Where a run writes (created if needed) and the case text it ran
-/// (case_used.toml; with the model, the checkpoint's fingerprint).
-struct RunFolder
-{
-  std::filesystem::path dir;
-  std::string case_text;
-};
-
-/// Runs the analysis on `fe` (materials and fixed boundaries already set)
-/// and writes into `folder.dir` (created): summary.json, crest.csv,
+/// The analysis on `fe` (materials and fixed boundaries already set)
+/// that writes into `folder.dir` (created): summary.json, crest.csv,
 /// fields.xdmf, envelopes.xdmf, modes.xdmf, face_<name>.csv, case_used.toml.
-/// Returns the summary. Collective.
+/// Its phases are collective; `fe` and the vectors must outlive it.
 ///
 /// With settings.checkpoint_every > 0 the state is saved every so many steps
 /// in out_dir/checkpoint; with settings.restart the run resumes from there
@@ -35,10 +29,20 @@ struct RunFolder
 /// (bonded joints): the system is solved for u_r with u = P u_r.
 /// `extra_static_loads` (full-space vectors, zero at fixed dofs: silt,
 /// uplift) are added to the static stage.
-nlohmann::json run_linear_seismic(fem::ElasticModel& fe,
-                                  const SeismicSettings& settings,
-                                  const std::vector<Vec>& extra_static_loads,
-                                  const RunFolder& folder, Mat tie = nullptr);
+std::unique_ptr<SeismicAnalysis>
+linear_seismic_analysis(fem::ElasticModel& fe, const SeismicSettings& settings,
+                        const std::vector<Vec>& extra_static_loads,
+                        const RunFolder& folder, Mat tie = nullptr);
+
+/// All phases of that analysis; returns the summary.
+inline nlohmann::json
+run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& settings,
+                   const std::vector<Vec>& extra_static_loads,
+                   const RunFolder& folder, Mat tie = nullptr)
+{
+  return linear_seismic_analysis(fe, settings, extra_static_loads, folder, tie)
+      ->run();
+}
 } // namespace damseis::analysis
 
 namespace damseis::analysis

@@ -109,6 +109,10 @@ public:
   ScalarEnvelope& kt_rate() { return _envelopes[1]; }
   ScalarEnvelope& syy_max() { return _envelopes[2]; }
   ScalarEnvelope& syy_min() { return _envelopes[3]; }
+  const ScalarEnvelope& rate() const { return _envelopes[0]; }
+  const ScalarEnvelope& kt_rate() const { return _envelopes[1]; }
+  const ScalarEnvelope& syy_max() const { return _envelopes[2]; }
+  const ScalarEnvelope& syy_min() const { return _envelopes[3]; }
 
 private:
   /// The envelopes and their checkpoint names.
@@ -196,40 +200,93 @@ void write_dam_points(MPI_Comm comm, const results::StressEnvelope& env,
                  "max_kappa_t_rate_per_s,max_syy_mpa,min_syy_mpa",
                  file);
 }
-} // namespace
 
-json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
-                           const ConcreteBulk& bulk,
-                           const std::vector<Vec>& extra_static_loads,
-                           const RunFolder& folder)
+/// {"value", "x", "y"(, "t")} of a scalar extreme, scaled.
+json scalar_json(const results::Extreme& e, double scale, bool with_time)
 {
-  const ConcreteSettings& concrete = bulk.concrete;
-  const std::filesystem::path& out_dir = folder.dir;
-  const std::string& case_text = folder.case_text;
-  results::set_stage("assembly");
-  const auto wall_start = Clock::now();
-  const auto model = fe.model();
-  MPI_Comm comm = model.mesh->comm();
-  int rank = 0;
-  MPI_Comm_rank(comm, &rank);
-  const int dim = fe.dim();
-  print_model_line(fe, ", concrete " + to_string(concrete.kind));
+  json j = {{"value", scale * e.value},
+            {"x", coordinate(e.x[0])},
+            {"y", coordinate(e.x[1])}};
+  if (with_time)
+    j["t"] = instant(e.t);
+  return j;
+}
 
-  const bool wet = s.reservoir.depth() > 0.0;
-  const fem::Reservoir* added = s.westergaard && wet ? &s.reservoir : nullptr;
-  Matrix K(fe.assemble_stiffness(), false);
-  Matrix M(fe.assemble_mass(added), false);
-  fem::ConcreteModel cm(fe, {{tags::dam, concrete.params}}, bulk.elastic,
-                        bulk.plane);
-  // An elastic material has no plastic strain to extrapolate: no IMPL-EX
-  // steps, no extrapolated predictor.
-  const bool plastic = concrete.kind != ConcreteModelKind::elastic;
-  cm.set_implex(concrete.implex && plastic);
-  ConcreteSystem system(cm);
+/// summary.json "concrete": the material of the run.
+json concrete_json(const ConcreteSettings& c, const fem::ConcreteModel& cm,
+                   int degree)
+{
+  const auto& p = c.params;
+  json j = {
+      {"model", to_string(c.kind)},
+      {"E_pa", p.E},
+      {"fc_mpa", p.fc0 * 1e-6},
+      {"ft_mpa", p.ft0 * 1e-6},
+      {"Gf_n_per_m", p.Gf},
+      {"static_E_pa", c.static_E},
+      {"static_fc_mpa", c.static_fc * 1e-6},
+      {"static_ft_mpa", c.static_ft * 1e-6},
+      {"factor_E", c.applied.E},
+      {"factor_strength", c.applied.strength},
+      {"material_bins", cm.material_count()},
+      {"material_integration", c.implex ? "implex" : "implicit"},
+      {"characteristic_length_m", concrete_characteristic_length(c)},
+      {"cells_with_reduced_tensile_strength", cm.cells_with_reduced_strength()},
+      // Energy Gf per unit crack area whatever the mesh: P1 cells no
+      // larger than the snap-back limit.
+      {"crack_band_exact",
+       degree == 1 && cm.cells_with_reduced_strength() == 0}};
+  if (cm.cells_with_reduced_strength() > 0)
+  {
+    const auto ft_low = cm.reduced_tensile_strength_range();
+    j["reduced_tensile_strength_mpa"] = {{"min", ft_low[0] * 1e-6},
+                                         {"max", ft_low[1] * 1e-6}};
+  }
+  return j;
+}
 
-  // Softening regularised by the crack band: say where it is not exact
-  // (material/README.md, README "softening studies").
-  if (plastic && fe.degree() > 1)
+/// summary.json "newton": the Newton work of the static stage and of every
+/// step of the time history (restored at a restart).
+json newton_json(const dynamics::NewtonSettings& newton,
+                 const StaticStageReport& st, const NewtonTotals& nt, int steps)
+{
+  return {{"rtol", newton.rtol},
+          {"extrapolated_predictor", newton.extrapolated_predictor},
+          {"static_iterations", st.iterations},
+          {"static_cuts", st.cuts},
+          {"iterations", nt.iterations},
+          {"iterations_per_step", nt.iterations / steps},
+          {"max_iterations_in_a_step", nt.max_iterations_in_a_step},
+          {"tangent_factorizations", nt.tangent_factorizations},
+          {"krylov_iterations", nt.krylov_iterations},
+          {"substepped_point_updates", nt.substepped},
+          {"return_maps", nt.return_maps},
+          {"local_newton_iterations", nt.local_iterations},
+          // In-run throughput of the points that left the elastic fast path
+          // (plane stress: all return maps of a point's sigma_zz iteration and
+          // its tangent), per core.
+          {"returned_points", nt.returned_points},
+          {"returned_points_per_core_second",
+           nt.return_map_seconds > 0.0
+               ? nt.returned_points / nt.return_map_seconds
+               : 0.0},
+          {"seconds",
+           {{"residual", nt.seconds_residual},
+            {"tangent_assembly", nt.seconds_tangent},
+            {"factorization", nt.seconds_factorization},
+            {"direction_solves", nt.seconds_solve},
+            {"return_maps_core_seconds", nt.return_map_seconds}}},
+          {"step_cuts", nt.cuts},
+          {"max_inelastic_points", nt.max_inelastic_points}};
+}
+
+/// Says where the crack band is not exact (material/README.md, README
+/// "softening studies"): P2 elements, cells above the snap-back limit.
+void print_crack_band_notes(MPI_Comm comm, const fem::ElasticModel& fe,
+                            const fem::ConcreteModel& cm,
+                            const ConcreteSettings& concrete)
+{
+  if (fe.degree() > 1)
   {
     results::print(comm,
                    "note: P" + std::to_string(fe.degree()) +
@@ -238,265 +295,268 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
                        "part of its points: 0.75 Gf in the crack-band test); "
                        "use mesh.order = 1 for softening studies");
   }
+  if (cm.cells_with_reduced_strength() == 0)
+    return;
   const auto ft_low = cm.reduced_tensile_strength_range();
-  if (plastic && cm.cells_with_reduced_strength() > 0)
-  {
-    std::ostringstream note;
-    note.precision(3);
-    note << "note: " << cm.cells_with_reduced_strength() << " of "
-         << region_cell_count(comm, model, tags::dam)
-         << " dam cells are larger than E Gf / ("
-         << concrete.params.snap_back_safety
-         << " ft^2) = " << concrete_characteristic_length(concrete)
-         << " m (snap-back "
-         << "limit of the softening): their tensile strength is lowered "
-         << "from " << concrete.params.ft0 * 1e-6 << " to " << ft_low[0] * 1e-6
-         << ".." << ft_low[1] * 1e-6
-         << " MPa (the crack band is not honoured there; summary.json "
-            "concrete.cells_with_reduced_tensile_strength); refine the mesh "
-            "where the concrete cracks";
-    results::print(comm, note.str());
-  }
+  std::ostringstream note;
+  note.precision(3);
+  note << "note: " << cm.cells_with_reduced_strength() << " of "
+       << region_cell_count(comm, fe.model(), tags::dam)
+       << " dam cells are larger than E Gf / ("
+       << concrete.params.snap_back_safety
+       << " ft^2) = " << concrete_characteristic_length(concrete)
+       << " m (snap-back "
+       << "limit of the softening): their tensile strength is lowered "
+       << "from " << concrete.params.ft0 * 1e-6 << " to " << ft_low[0] * 1e-6
+       << ".." << ft_low[1] * 1e-6
+       << " MPa (the crack band is not honoured there; summary.json "
+          "concrete.cells_with_reduced_tensile_strength); refine the mesh "
+          "where the concrete cracks";
+  results::print(comm, note.str());
+}
 
-  // Modal analysis of the initial elastic system; Rayleigh damping with K0.
-  results::set_stage("modal analysis");
-  Matrix M0(nullptr, false);
-  if (added)
-    M0 = Matrix(fe.assemble_mass(nullptr), false);
-  const ModalResult modal =
-      modal_and_damping(K.mat(), M.mat(), added ? M0.mat() : nullptr, s);
+/// The analysis with HTC concrete in the dam: the state is total (static
+/// included), Newton per step on the concrete system, stresses at the
+/// quadrature points.
+class ConcreteSeismicAnalysis : public SeismicAnalysis
+{
+public:
+  ConcreteSeismicAnalysis(fem::ElasticModel& fe, const SeismicSettings& s,
+                          ConcreteBulk bulk,
+                          const std::vector<Vec>& extra_static_loads,
+                          RunFolder folder);
+  void modal_stage() override;
+  void static_stage() override;
+  void time_history() override;
+  json results() override;
 
-  // Static stage: dead weight, then the reservoir (and silt, uplift) in
-  // increments, with the rate-independent material.
-  results::set_stage("static stage");
+private:
+  void add_recorders(engine::TimeHistory& history);
+  void write_concrete_outputs(json& summary) const;
+
+  fem::ElasticModel& _fe;
+  const SeismicSettings& _s;
+  const ConcreteBulk _bulk;
+  RunFolder _folder;
+  MPI_Comm _comm;
+  const Clock::time_point _wall_start = Clock::now();
+  const fem::Reservoir* _added = nullptr; ///< Westergaard added mass
+  /// An elastic material has no plastic strain to extrapolate: no IMPL-EX
+  /// steps, no extrapolated predictor.
+  bool _plastic = false;
+  Matrix _K{nullptr, false}, _M{nullptr, false};
+  fem::ConcreteModel _cm;
+  ConcreteSystem _system;
+  /// Dead weight alone, and all static loads.
+  Vector _F_g{nullptr, false}, _F_static{nullptr, false};
+  /// The static solution and its internal force and stresses.
+  Vector _u_static{nullptr, false}, _f_int_static{nullptr, false};
+  std::vector<double> _sig_static;
+  std::optional<ModalResult> _modal;
+  StaticStageReport _static_report;
+  double _static_seconds = 0.0;
+
+  // The time history's parts and its report.
+  dynamics::NewtonSettings _newton;
+  std::unique_ptr<ConcreteStepper> _stepper;
+  std::unique_ptr<FullDisplacement> _u;
+  std::unique_ptr<StressRecorder> _stresses;
+  std::unique_ptr<ConcreteRecorder> _concrete_state;
+  std::unique_ptr<PointHistories> _points;
+  std::unique_ptr<FaceDisplacementRecorder> _face_u;
+  std::unique_ptr<FieldRecorder> _fields;
+  std::vector<double> _s_field;
+  std::vector<std::int8_t> _in_dam;
+  std::vector<std::vector<std::int32_t>> _face_points;
+  std::array<double, 3> _base_static = {0, 0, 0};
+  engine::TimeHistoryReport _run;
+};
+
+ConcreteSeismicAnalysis::ConcreteSeismicAnalysis(
+    fem::ElasticModel& fe, const SeismicSettings& s, ConcreteBulk bulk,
+    const std::vector<Vec>& extra_static_loads, RunFolder folder)
+    : _fe(fe), _s(s), _bulk(std::move(bulk)), _folder(std::move(folder)),
+      _comm(fe.mesh()->comm()),
+      _cm(fe, {{tags::dam, _bulk.concrete.params}}, _bulk.elastic, _bulk.plane),
+      _system(_cm)
+{
+  results::set_stage("assembly");
+  const ConcreteSettings& concrete = _bulk.concrete;
+  print_model_line(fe, ", concrete " + to_string(concrete.kind));
+  const bool wet = s.reservoir.depth() > 0.0;
+  _added = s.westergaard && wet ? &s.reservoir : nullptr;
+  _K = Matrix(fe.assemble_stiffness(), false);
+  _M = Matrix(fe.assemble_mass(_added), false);
+  _plastic = concrete.kind != ConcreteModelKind::elastic;
+  _cm.set_implex(concrete.implex && _plastic);
+  if (_plastic)
+    print_crack_band_notes(_comm, fe, _cm, concrete);
+
+  // The static loads: dead weight, then the reservoir (and silt, uplift).
   std::array<double, 3> g = {0, 0, 0};
-  g[dim - 1] = -s.gravity;
-  Vector F_g(fe.assemble_gravity(g), false);
-  Vector F_static = linalg::column_vector(K.mat());
-  VecCopy(F_g.vec(), F_static.vec());
+  g[fe.dim() - 1] = -s.gravity;
+  _F_g = Vector(fe.assemble_gravity(g), false);
+  _F_static = linalg::column_vector(_K.mat());
+  VecCopy(_F_g.vec(), _F_static.vec());
   if (wet)
   {
     Vector H(fe.assemble_hydrostatic(s.reservoir), false);
-    VecAXPY(F_static.vec(), 1.0, H.vec());
+    VecAXPY(_F_static.vec(), 1.0, H.vec());
   }
   for (Vec extra : extra_static_loads)
-    VecAXPY(F_static.vec(), 1.0, extra);
-  Vector u_static = linalg::column_vector(K.mat());
+    VecAXPY(_F_static.vec(), 1.0, extra);
+}
+
+void ConcreteSeismicAnalysis::modal_stage()
+{
+  // The initial elastic system; Rayleigh damping with K0.
+  results::set_stage("modal analysis");
+  Matrix M0(nullptr, false);
+  if (_added)
+    M0 = Matrix(_fe.assemble_mass(nullptr), false);
+  _modal =
+      modal_and_damping(_K.mat(), _M.mat(), _added ? M0.mat() : nullptr, _s);
+}
+
+void ConcreteSeismicAnalysis::static_stage()
+{
+  if (!_modal)
+    throw std::logic_error("the static stage relaxes with the damping of the "
+                           "modal stage: call modal_stage() first");
+  // Dead weight, then the other loads in increments, with the
+  // rate-independent material.
+  results::set_stage("static stage");
+  const ConcreteSettings& concrete = _bulk.concrete;
+  _u_static = linalg::column_vector(_K.mat());
   StaticStageSettings stage;
   stage.increments = concrete.static_increments;
   stage.newton = concrete.newton;
-  stage.factorization = s.factorization;
-  stage.f1_hz = modal.f1;
-  stage.f2_hz = modal.f2;
-  const StaticStageReport static_stage =
-      solve_static_stage(system, K.mat(), M.mat(), F_g.vec(), F_static.vec(),
-                         u_static.vec(), stage);
-  const std::vector<double> sig_static(cm.stress().begin(), cm.stress().end());
-  Vector fint0 = linalg::column_vector(K.mat());
-  system.internal_force(fint0.vec());
-  const double static_seconds = seconds_since(wall_start) - modal.seconds;
-  results::print(comm,
-                 "static stage: " + std::to_string(static_stage.iterations) +
+  stage.factorization = _s.factorization;
+  stage.f1_hz = _modal->f1;
+  stage.f2_hz = _modal->f2;
+  _static_report = solve_static_stage(_system, _K.mat(), _M.mat(), _F_g.vec(),
+                                      _F_static.vec(), _u_static.vec(), stage);
+  _sig_static.assign(_cm.stress().begin(), _cm.stress().end());
+  _f_int_static = linalg::column_vector(_K.mat());
+  _system.internal_force(_f_int_static.vec());
+  _static_seconds = seconds_since(_wall_start) - _modal->seconds;
+  results::print(_comm,
+                 "static stage: " + std::to_string(_static_report.iterations) +
                      " Newton iterations, " +
-                     std::to_string(system.accepted.inelastic) +
+                     std::to_string(_system.accepted.inelastic) +
                      " inelastic points");
+}
 
-  // Dynamic stage: M a + C v + f_int(u) = F_static - M sum_c r_c a_gc(t),
-  // u relative to the base, total (static included).
-  // (IMPL-EX steps are extrapolated anyway.)
-  dynamics::NewtonSettings newton_settings = concrete.newton;
-  newton_settings.extrapolated_predictor =
-      concrete.newton.extrapolated_predictor && !concrete.implex && plastic;
-  ConcreteStepper stepper(M.mat(), K.mat(), modal.damping, s.scheme, system, cm,
-                          newton_settings, s.factorization, u_static.vec(),
-                          fint0.vec());
-  const GroundMotionLoad ground(fe, s, M.mat(), nullptr, F_static.vec());
+void ConcreteSeismicAnalysis::time_history()
+{
+  // M a + C v + f_int(u) = F_static - M sum_c r_c a_gc(t), u relative to
+  // the base, total (static included). (IMPL-EX steps are extrapolated
+  // anyway.)
+  const ConcreteSettings& concrete = _bulk.concrete;
+  _newton = concrete.newton;
+  _newton.extrapolated_predictor =
+      concrete.newton.extrapolated_predictor && !concrete.implex && _plastic;
+  _stepper = std::make_unique<ConcreteStepper>(
+      _M.mat(), _K.mat(), _modal->damping, _s.scheme, _system, _cm, _newton,
+      _s.factorization, _u_static.vec(), _f_int_static.vec());
+  const GroundMotionLoad ground(_fe, _s, _M.mat(), nullptr, _F_static.vec());
 
-  std::filesystem::create_directories(out_dir);
+  std::filesystem::create_directories(_folder.dir);
+  int rank = 0;
+  MPI_Comm_rank(_comm, &rank);
   if (rank == 0)
-    std::ofstream(out_dir / "case_used.toml") << case_text;
+    std::ofstream(_folder.dir / "case_used.toml") << _folder.case_text;
   write_modes(
-      fe, modal.modes, [](Vec x) { return x; }, out_dir / "modes.xdmf");
+      _fe, _modal->modes, [](Vec x) { return x; }, _folder.dir / "modes.xdmf");
 
-  // Recorders. Points: the quadrature points of the owned cells.
-  auto Sq = cm.stress_space();
+  engine::TimeHistory history(
+      _comm, time_history_settings(_s, _fe, _folder.dir, _folder.case_text),
+      *_stepper, ground);
+  add_recorders(history);
+  _run = history.run();
+}
+
+void ConcreteSeismicAnalysis::add_recorders(engine::TimeHistory& history)
+{
+  // Points: the quadrature points of the owned cells.
+  const auto model = _fe.model();
+  auto Sq = _cm.stress_space();
   const std::int32_t n_pts = Sq->dofmap()->index_map->size_local();
-  std::vector<std::int8_t> in_dam(n_pts, 0);
+  _in_dam.assign(n_pts, 0);
   for (std::int32_t c : region_cells(model, tags::dam))
   {
     for (std::int32_t d : Sq->dofmap()->cell_dofs(c))
     {
       if (d < n_pts)
-        in_dam[d] = 1;
+        _in_dam[d] = 1;
     }
   }
-  FullDisplacement u(stepper, nullptr);
-  std::vector<double> s_field(cm.stress().size());
-  StressRecorder stresses(results::StressEnvelope(3, cm.coordinates(), in_dam),
-                          [&]() -> std::span<const double>
-                          {
-                            auto sig = cm.stress();
-                            for (std::size_t i = 0; i < s_field.size(); ++i)
-                              s_field[i] = s.stress_total
-                                               ? sig[i]
-                                               : sig[i] - sig_static[i];
-                            return s_field;
-                          });
-  ConcreteRecorder concrete_state(cm, stresses, n_pts);
-  std::vector<std::vector<std::int32_t>> face_pts;
-  for (const auto& [name, face_tags] : s.faces)
-    face_pts.push_back(
+  _u = std::make_unique<FullDisplacement>(*_stepper, nullptr);
+  // The stresses (seismic: less the static ones, unless total asked).
+  _s_field.resize(_cm.stress().size());
+  _stresses = std::make_unique<StressRecorder>(
+      results::StressEnvelope(3, _cm.coordinates(), _in_dam),
+      [this]() -> std::span<const double>
+      {
+        auto sig = _cm.stress();
+        for (std::size_t i = 0; i < _s_field.size(); ++i)
+          _s_field[i] = _s.stress_total ? sig[i] : sig[i] - _sig_static[i];
+        return _s_field;
+      });
+  _concrete_state = std::make_unique<ConcreteRecorder>(_cm, *_stresses, n_pts);
+  for (const auto& [name, face_tags] : _s.faces)
+    _face_points.push_back(
         results::face_points(*Sq, *model.facet_tags, face_tags, false));
-  PointHistories points(*fe.V(), s.crest_point, s.base_point, s.steps, u);
-  const auto crest_static = points.crest().value_on_all(u_static.vec());
-  const auto base_static = points.base().value_on_all(u_static.vec());
-  // Envelope of the seismic horizontal displacement along the upstream face.
-  FaceDisplacementRecorder face_u(*fe.V(), *model.facet_tags,
-                                  tags::upstream_face, points.base(), u,
-                                  u_static.vec(), base_static[0]);
-  FieldRecorder fields(fe, out_dir, s.output_every, [&] { return u.vec(); },
-                       stresses,
-                       {Sq,
-                        {"kappa_t", "kappa_c", "strain_rate_per_s"},
-                        [&]() -> std::vector<std::span<const double>> {
-                          return {cm.kappa_t(), cm.kappa_c(), cm.strain_rate()};
-                        }});
-
-  // The time history.
-  engine::TimeHistory history(
-      comm, time_history_settings(s, fe, out_dir, case_text), stepper, ground);
+  _points = std::make_unique<PointHistories>(*_fe.V(), _s.crest_point,
+                                             _s.base_point, _s.steps, *_u);
+  // Envelope of the seismic horizontal displacement along the upstream
+  // face.
+  _base_static = _points->base().value_on_all(_u_static.vec());
+  _face_u = std::make_unique<FaceDisplacementRecorder>(
+      *_fe.V(), *model.facet_tags, tags::upstream_face, _points->base(), *_u,
+      _u_static.vec(), _base_static[0]);
+  _fields = std::make_unique<FieldRecorder>(
+      _fe, _folder.dir, _s.output_every, [this] { return _u->vec(); },
+      *_stresses,
+      FieldRecorder::Extras{
+          Sq,
+          {"kappa_t", "kappa_c", "strain_rate_per_s"},
+          [this]() -> std::vector<std::span<const double>> {
+            return {_cm.kappa_t(), _cm.kappa_c(), _cm.strain_rate()};
+          }});
   for (engine::Observer* o : std::initializer_list<engine::Observer*>{
-           &u, &stresses, &concrete_state, &points, &face_u, &fields})
+           _u.get(), _stresses.get(), _concrete_state.get(), _points.get(),
+           _face_u.get(), _fields.get()})
     history.observe(*o);
-  const engine::TimeHistoryReport run = history.run();
-  const int n = s.steps;
-  const double dt = s.scheme.dt;
-  const auto& envelope = stresses.envelope();
+}
+
+json ConcreteSeismicAnalysis::results()
+{
   results::set_stage("writing outputs");
-  const std::vector<double>& hist = points.reduce(comm);
+  const int dim = _fe.dim();
+  const std::filesystem::path& dir = _folder.dir;
+  const std::vector<double>& hist = _points->reduce(_comm);
+  const auto crest_static = _points->crest().value_on_all(_u_static.vec());
   const json crest_summary =
-      write_crest_history(comm, hist, dim, n, dt, crest_static, base_static,
-                          true, out_dir / "crest.csv");
+      write_crest_history(_comm, hist, dim, _s.steps, _s.scheme.dt,
+                          crest_static, _base_static, true, dir / "crest.csv");
+  const auto& envelope = _stresses->envelope();
+  const json faces = write_faces(_comm, _s, envelope, _face_points, dim, dir);
+  _face_u->write_csv(_comm, dir / "displacement_envelope.csv");
 
-  // Envelopes: stresses, and the state variables as cell maxima.
-  std::vector<double> rate_all(cm.strain_rate().size(), 0.0),
-      kt_rate_all(rate_all.size(), 0.0);
-  std::copy(concrete_state.rate().max.begin(), concrete_state.rate().max.end(),
-            rate_all.begin());
-  std::copy(concrete_state.kt_rate().max.begin(),
-            concrete_state.kt_rate().max.end(), kt_rate_all.begin());
-  results::write_envelopes(fe, envelope, region_cells(model, tags::dam),
-                           out_dir / "envelopes.xdmf", Sq, false,
-                           {{"kappa_t", cm.kappa_t()},
-                            {"kappa_c", cm.kappa_c()},
-                            {"max_strain_rate_per_s", rate_all},
-                            {"max_kappa_t_rate_per_s", kt_rate_all}});
-  const json faces = write_faces(comm, s, envelope, face_pts, dim, out_dir);
-  face_u.write_csv(comm, out_dir / "displacement_envelope.csv");
-  {
-    std::vector<double> kt(cm.kappa_t().begin(), cm.kappa_t().begin() + n_pts),
-        kc(cm.kappa_c().begin(), cm.kappa_c().begin() + n_pts);
-    std::vector<double> syy_hi(n_pts), syy_lo(n_pts);
-    for (std::int32_t i = 0; i < n_pts; ++i)
-    {
-      syy_hi[i] = 1e-6 * concrete_state.syy_max().max[i];
-      syy_lo[i] = -1e-6 * concrete_state.syy_min().max[i];
-    }
-    write_dam_points(comm, envelope, in_dam,
-                     {&kt, &kc, &concrete_state.rate().max,
-                      &concrete_state.rate().t, &concrete_state.kt_rate().max,
-                      &syy_hi, &syy_lo},
-                     out_dir / "dam_points.csv");
-  }
-  ScalarEnvelope kt_final(n_pts);
-  kt_final.update(cm.kappa_t(), n * dt);
-  const auto kt_max = scalar_extreme(comm, kt_final, cm.coordinates(), in_dam);
-  const auto rate_max =
-      scalar_extreme(comm, concrete_state.rate(), cm.coordinates(), in_dam);
-  const auto syy_hi =
-      scalar_extreme(comm, concrete_state.syy_max(), cm.coordinates(), in_dam);
-  const auto syy_lo =
-      scalar_extreme(comm, concrete_state.syy_min(), cm.coordinates(), in_dam);
-
-  // The Newton statistics cover every step (restored at a restart).
-  const int steps_all = std::max(1, n);
-  const NewtonTotals& nt = stepper.totals();
-  const auto& p = concrete.params;
   json summary = seismic_summary(
-      comm, fe, s, modal, added != nullptr, points.crest().node(), envelope,
-      faces, stepper.solver_name(),
-      {static_seconds, modal.seconds, stepper.factor_seconds(),
-       run.loop_seconds, run.restarted_from_step});
+      _comm, _fe, _s, *_modal, _added != nullptr, _points->crest().node(),
+      envelope, faces, _stepper->solver_name(),
+      {_static_seconds, _modal->seconds, _stepper->factor_seconds(),
+       _run.loop_seconds, _run.restarted_from_step});
   summary.update(crest_summary);
-  summary["concrete"] = {
-      {"model", to_string(concrete.kind)},
-      {"E_pa", p.E},
-      {"fc_mpa", p.fc0 * 1e-6},
-      {"ft_mpa", p.ft0 * 1e-6},
-      {"Gf_n_per_m", p.Gf},
-      {"static_E_pa", concrete.static_E},
-      {"static_fc_mpa", concrete.static_fc * 1e-6},
-      {"static_ft_mpa", concrete.static_ft * 1e-6},
-      {"factor_E", concrete.applied.E},
-      {"factor_strength", concrete.applied.strength},
-      {"material_bins", cm.material_count()},
-      {"material_integration", concrete.implex ? "implex" : "implicit"},
-      {"characteristic_length_m", concrete_characteristic_length(concrete)},
-      {"cells_with_reduced_tensile_strength", cm.cells_with_reduced_strength()},
-      // Energy Gf per unit crack area whatever the mesh: P1 cells no
-      // larger than the snap-back limit.
-      {"crack_band_exact",
-       fe.degree() == 1 && cm.cells_with_reduced_strength() == 0}};
-  if (cm.cells_with_reduced_strength() > 0)
-  {
-    summary["concrete"]["reduced_tensile_strength_mpa"] = {
-        {"min", ft_low[0] * 1e-6}, {"max", ft_low[1] * 1e-6}};
-  }
-  summary["max_kappa_t"] = {{"value", kt_max.value},
-                            {"x", coordinate(kt_max.x[0])},
-                            {"y", coordinate(kt_max.x[1])}};
-  summary["max_strain_rate_per_s"] = {{"value", rate_max.value},
-                                      {"x", coordinate(rate_max.x[0])},
-                                      {"y", coordinate(rate_max.x[1])},
-                                      {"t", instant(rate_max.t)}};
-  summary["max_vertical_stress_mpa"] = {{"value", 1e-6 * syy_hi.value},
-                                        {"x", coordinate(syy_hi.x[0])},
-                                        {"y", coordinate(syy_hi.x[1])},
-                                        {"t", instant(syy_hi.t)}};
-  summary["min_vertical_stress_mpa"] = {{"value", -1e-6 * syy_lo.value},
-                                        {"x", coordinate(syy_lo.x[0])},
-                                        {"y", coordinate(syy_lo.x[1])},
-                                        {"t", instant(syy_lo.t)}};
-  summary["static_stage"] = static_stage.to_json();
-  summary["newton"] = {
-      {"rtol", concrete.newton.rtol},
-      {"extrapolated_predictor", newton_settings.extrapolated_predictor},
-      {"static_iterations", static_stage.iterations},
-      {"static_cuts", static_stage.cuts},
-      {"iterations", nt.iterations},
-      {"iterations_per_step", nt.iterations / steps_all},
-      {"max_iterations_in_a_step", nt.max_iterations_in_a_step},
-      {"tangent_factorizations", nt.tangent_factorizations},
-      {"krylov_iterations", nt.krylov_iterations},
-      {"substepped_point_updates", nt.substepped},
-      {"return_maps", nt.return_maps},
-      {"local_newton_iterations", nt.local_iterations},
-      // In-run throughput of the points that left the elastic fast path
-      // (plane stress: all return maps of a point's sigma_zz iteration and
-      // its tangent), per core.
-      {"returned_points", nt.returned_points},
-      {"returned_points_per_core_second",
-       nt.return_map_seconds > 0.0 ? nt.returned_points / nt.return_map_seconds
-                                   : 0.0},
-      {"seconds",
-       {{"residual", nt.seconds_residual},
-        {"tangent_assembly", nt.seconds_tangent},
-        {"factorization", nt.seconds_factorization},
-        {"direction_solves", nt.seconds_solve},
-        {"return_maps_core_seconds", nt.return_map_seconds}}},
-      {"step_cuts", nt.cuts},
-      {"max_inelastic_points", nt.max_inelastic_points}};
-  if (concrete.implex)
+  write_concrete_outputs(summary);
+  // The Newton statistics cover every step (restored at a restart).
+  const int steps_all = std::max(1, _s.steps);
+  const NewtonTotals& nt = _stepper->totals();
+  summary["static_stage"] = _static_report.to_json();
+  summary["newton"] = newton_json(_newton, _static_report, nt, steps_all);
+  if (_bulk.concrete.implex)
   {
     // How far the implicit stresses of the IMPL-EX steps are from
     // equilibrium, in the units of the Newton tolerance (README).
@@ -505,10 +565,65 @@ json run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& s,
         {"max", nt.implex_error_max},
         {"t_of_max", nt.implex_error_time}};
   }
-  summary["wall_seconds"] = seconds_since(wall_start);
-  print_summary_line(comm, summary,
+  summary["wall_seconds"] = seconds_since(_wall_start);
+  print_summary_line(_comm, summary,
                      ", Newton iterations per step " +
                          std::to_string(nt.iterations / steps_all));
   return summary;
+}
+
+/// envelopes.xdmf with the state variables as cell maxima, dam_points.csv,
+/// and the summary's concrete entries.
+void ConcreteSeismicAnalysis::write_concrete_outputs(json& summary) const
+{
+  const std::filesystem::path& dir = _folder.dir;
+  const auto& envelope = _stresses->envelope();
+  const ConcreteRecorder& state = *_concrete_state;
+  const std::size_t n_pts = _in_dam.size();
+  std::vector<double> rate_all(_cm.strain_rate().size(), 0.0),
+      kt_rate_all(rate_all.size(), 0.0);
+  std::copy(state.rate().max.begin(), state.rate().max.end(), rate_all.begin());
+  std::copy(state.kt_rate().max.begin(), state.kt_rate().max.end(),
+            kt_rate_all.begin());
+  results::write_envelopes(_fe, envelope, region_cells(_fe.model(), tags::dam),
+                           dir / "envelopes.xdmf", _cm.stress_space(), false,
+                           {{"kappa_t", _cm.kappa_t()},
+                            {"kappa_c", _cm.kappa_c()},
+                            {"max_strain_rate_per_s", rate_all},
+                            {"max_kappa_t_rate_per_s", kt_rate_all}});
+  std::vector<double> kt(_cm.kappa_t().begin(), _cm.kappa_t().begin() + n_pts),
+      kc(_cm.kappa_c().begin(), _cm.kappa_c().begin() + n_pts);
+  std::vector<double> syy_hi(n_pts), syy_lo(n_pts);
+  for (std::size_t i = 0; i < n_pts; ++i)
+  {
+    syy_hi[i] = 1e-6 * state.syy_max().max[i];
+    syy_lo[i] = -1e-6 * state.syy_min().max[i];
+  }
+  write_dam_points(_comm, envelope, _in_dam,
+                   {&kt, &kc, &state.rate().max, &state.rate().t,
+                    &state.kt_rate().max, &syy_hi, &syy_lo},
+                   dir / "dam_points.csv");
+
+  ScalarEnvelope kt_final(n_pts);
+  kt_final.update(_cm.kappa_t(), _s.steps * _s.scheme.dt);
+  const auto x = _cm.coordinates();
+  summary["concrete"] = concrete_json(_bulk.concrete, _cm, _fe.degree());
+  summary["max_kappa_t"] =
+      scalar_json(scalar_extreme(_comm, kt_final, x, _in_dam), 1.0, false);
+  summary["max_strain_rate_per_s"] =
+      scalar_json(scalar_extreme(_comm, state.rate(), x, _in_dam), 1.0, true);
+  summary["max_vertical_stress_mpa"] = scalar_json(
+      scalar_extreme(_comm, state.syy_max(), x, _in_dam), 1e-6, true);
+  summary["min_vertical_stress_mpa"] = scalar_json(
+      scalar_extreme(_comm, state.syy_min(), x, _in_dam), -1e-6, true);
+}
+} // namespace
+
+std::unique_ptr<SeismicAnalysis> concrete_seismic_analysis(
+    fem::ElasticModel& fe, const SeismicSettings& s, const ConcreteBulk& bulk,
+    const std::vector<Vec>& extra_static_loads, const RunFolder& folder)
+{
+  return std::make_unique<ConcreteSeismicAnalysis>(fe, s, bulk,
+                                                   extra_static_loads, folder);
 }
 } // namespace damseis::analysis

@@ -26,9 +26,9 @@ struct ConcreteBulk
   fem::PlaneMode plane = fem::PlaneMode::plane_strain;
 };
 
-/// Runs the analysis on `fe` (fixed boundaries set; its materials are the
+/// The analysis on `fe` (fixed boundaries set; its materials are the
 /// initial elastic ones and must match `bulk.concrete.params` in the dam
-/// region) and writes into `folder.dir` what run_linear_seismic writes,
+/// region) that writes into `folder.dir` what run_linear_seismic writes,
 /// plus dam_points.csv (per dam quadrature point: envelopes, equivalent
 /// viscoplastic strains, maximum strain rates). `extra_static_loads`
 /// (full-space vectors, zero at fixed dofs) are applied with the reservoir
@@ -37,9 +37,20 @@ struct ConcreteBulk
 ///
 /// Throws dynamics::StepFailure if a step cannot be solved (the outputs
 /// written so far stay; no unconverged step is accepted).
-nlohmann::json run_nonlinear_seismic(fem::ElasticModel& fe,
-                                     const SeismicSettings& settings,
-                                     const ConcreteBulk& bulk,
-                                     const std::vector<Vec>& extra_static_loads,
-                                     const RunFolder& folder);
+std::unique_ptr<SeismicAnalysis> concrete_seismic_analysis(
+    fem::ElasticModel& fe, const SeismicSettings& settings,
+    const ConcreteBulk& bulk, const std::vector<Vec>& extra_static_loads,
+    const RunFolder& folder);
+
+/// All phases of that analysis; returns the summary.
+inline nlohmann::json
+run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& settings,
+                      const ConcreteBulk& bulk,
+                      const std::vector<Vec>& extra_static_loads,
+                      const RunFolder& folder)
+{
+  return concrete_seismic_analysis(fe, settings, bulk, extra_static_loads,
+                                   folder)
+      ->run();
+}
 } // namespace damseis::analysis
