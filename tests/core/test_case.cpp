@@ -36,6 +36,8 @@ Schema make_schema()
       .at_least(1);
   schema.real_array("damping.ratios", "[0.05, 0.05]", "-", "Damping ratios")
       .between(0, 1);
+  schema.string_array("output.groups", "[\"dam\", \"rock\"]", "-",
+                      "Mesh groups to report");
   schema.string("output.stress", "seismic", "-", "Stress to save",
                 {"static", "seismic", "total"});
   schema.integer("output.vtk.every", "10", "-", "VTK output every n steps")
@@ -349,6 +351,9 @@ TEST(CaseLoad, ToTomlRoundTrips)
     case Type::integer_array:
       EXPECT_EQ(r.integers(key.path), c.integers(key.path));
       break;
+    case Type::string_array:
+      EXPECT_EQ(r.strings(key.path), c.strings(key.path));
+      break;
     }
   }
   // Written again: identical, but for the header naming the file and the
@@ -365,6 +370,43 @@ TEST(CaseLoad, ToTomlRoundTrips)
   EXPECT_NE(text.find("[output.vtk]"), std::string::npos) << text;
   EXPECT_NE(text.find("\n# --set material.E=3.3e10\n"), std::string::npos)
       << text;
+}
+
+TEST(CaseLoad, StringArrays)
+{
+  Schema schema;
+  schema.string_array("regions.groups", "[\"dam\"]", "-", "mesh groups");
+  const auto dir = std::filesystem::temp_directory_path();
+  const auto file = dir / "damseis_string_array.toml";
+  std::ofstream(file) << "[regions]\ngroups = [\"dam\", \"rock 1\"]\n";
+  Case c = Case::load(schema, file);
+  EXPECT_EQ(c.strings("regions.groups"),
+            (std::vector<std::string>{"dam", "rock 1"}));
+  // --set: TOML, or bare words with or without brackets.
+  for (const std::string set : {"regions.groups=[\"a\", \"b\"]",
+                                "regions.groups=a, b", "regions.groups=[a,b]"})
+  {
+    Case o = Case::load(schema, file, {set});
+    EXPECT_EQ(o.strings("regions.groups"), (std::vector<std::string>{"a", "b"}))
+        << set;
+  }
+  // A number in the array is refused with one line naming the key.
+  std::ofstream(file) << "[regions]\ngroups = [\"dam\", 3]\n";
+  try
+  {
+    Case::load(schema, file);
+    FAIL() << "accepted a number in a string array";
+  }
+  catch (const InputError& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("regions.groups"), std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("array of strings"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(schema.string_array("regions.x", "[1]", "-", ""),
+               std::logic_error);
+  std::filesystem::remove(file);
 }
 
 TEST(CaseLoad, ProgrammingErrorsAreLogicErrors)

@@ -114,8 +114,8 @@ gravity_dam_seismic_analysis(GravityDamModel& model,
 {
   if (cfg.concrete_model.kind == ConcreteModelKind::linear)
   {
-    return linear_seismic_analysis(*model.fe, cfg.seismic, model.static_loads(),
-                                   folder);
+    return linear_seismic_analysis(*model.fe, cfg.seismic,
+                                   {model.static_loads()}, folder);
   }
   // The regions other than the dam stay linear elastic.
   return concrete_seismic_analysis(

@@ -4,6 +4,7 @@
 #include "modal_stage.h"
 #include "recorders.h"
 #include "run_outputs.h"
+#include "timed_loads.h"
 #include <chrono>
 #include <cmath>
 #include <damseis/engine/linear_stepper.h>
@@ -40,8 +41,7 @@ class LinearSeismicAnalysis : public SeismicAnalysis
 {
 public:
   LinearSeismicAnalysis(fem::ElasticModel& fe, const SeismicSettings& s,
-                        const std::vector<Vec>& extra_static_loads,
-                        RunFolder folder, Mat tie);
+                        const ModelLoads& loads, RunFolder folder, Mat tie);
   void modal_stage() override;
   void static_stage() override;
   void time_history() override;
@@ -50,8 +50,12 @@ public:
 private:
   void add_recorders(engine::TimeHistory& history);
 
+  /// The initial state of a run with an initial velocity.
+  engine::InitialState initial_state();
+
   fem::ElasticModel& _fe;
   const SeismicSettings& _s;
+  const ModelLoads _loads;
   RunFolder _folder;
   Mat _tie;
   MPI_Comm _comm;
@@ -71,6 +75,8 @@ private:
   std::unique_ptr<PointHistories> _points;
   std::unique_ptr<FaceDisplacementRecorder> _face_u;
   std::unique_ptr<FieldRecorder> _fields;
+  std::unique_ptr<PointStates> _point_states;
+  Vector _v0{nullptr, false}, _a0{nullptr, false};
   Vector _s_field{nullptr, false}, _u_static_full{nullptr, false},
       _u_out{nullptr, false};
   std::vector<double> _s_values;
@@ -78,10 +84,11 @@ private:
   engine::TimeHistoryReport _run;
 };
 
-LinearSeismicAnalysis::LinearSeismicAnalysis(
-    fem::ElasticModel& fe, const SeismicSettings& s,
-    const std::vector<Vec>& extra_static_loads, RunFolder folder, Mat tie)
-    : _fe(fe), _s(s), _folder(std::move(folder)), _tie(tie),
+LinearSeismicAnalysis::LinearSeismicAnalysis(fem::ElasticModel& fe,
+                                             const SeismicSettings& s,
+                                             const ModelLoads& loads,
+                                             RunFolder folder, Mat tie)
+    : _fe(fe), _s(s), _loads(loads), _folder(std::move(folder)), _tie(tie),
       _comm(fe.mesh()->comm())
 {
   results::set_stage("assembly");
@@ -106,7 +113,7 @@ LinearSeismicAnalysis::LinearSeismicAnalysis(
     Vector H(fe.assemble_hydrostatic(s.reservoir), false);
     VecAXPY(F_full.vec(), 1.0, H.vec());
   }
-  for (Vec extra : extra_static_loads)
+  for (Vec extra : loads.static_loads)
     VecAXPY(F_full.vec(), 1.0, extra);
   if (tie)
   {
@@ -161,6 +168,8 @@ void LinearSeismicAnalysis::time_history()
   _stepper = std::make_unique<engine::LinearStepper>(
       _M.mat(), _K.mat(), _modal->damping, _s.scheme, _s.factorization);
   const GroundMotionLoad ground(_fe, _s, _M.mat(), _tie);
+  // Tractions with their histories on top of the ground motion's load.
+  const LoadWithTimedTerms load(ground, _loads.timed, _tie);
 
   // Outputs: every input check has passed by now.
   std::filesystem::create_directories(_folder.dir);
@@ -175,9 +184,64 @@ void LinearSeismicAnalysis::time_history()
 
   engine::TimeHistory history(
       _comm, time_history_settings(_s, _fe, _folder.dir, _folder.case_text),
-      *_stepper, ground);
+      *_stepper, load);
   add_recorders(history);
-  _run = history.run();
+  // (A restart takes its state from the checkpoint.)
+  _run = history.run(_s.restart ? engine::InitialState{} : initial_state());
+}
+
+engine::InitialState LinearSeismicAnalysis::initial_state()
+{
+  if (!_loads.initial_velocity)
+    return {};
+  // v0 on the system's unknowns, and a0 with M a0 = f(0) - C v0 where M
+  // has mass: a0 = a_ground(0) - M^-1 C v0, C = a_M M + b_K K. Rows
+  // without mass (fixed dofs, massless regions) keep the ground's a0.
+  const GroundMotionLoad ground(_fe, _s, _M.mat(), _tie);
+  if (_tie)
+    _v0 = Vector(fem::restrict_to_tied(_tie, _loads.initial_velocity), false);
+  else
+  {
+    _v0 = linalg::column_vector(_K.mat());
+    VecCopy(_loads.initial_velocity, _v0.vec());
+  }
+  _a0 = linalg::column_vector(_K.mat());
+  ground.initial_acceleration(_a0.vec());
+  Vector r = linalg::column_vector(_K.mat()),
+         Kv = linalg::column_vector(_K.mat());
+  MatMult(_M.mat(), _v0.vec(), r.vec());
+  MatMult(_K.mat(), _v0.vec(), Kv.vec());
+  VecAXPBY(r.vec(), -_modal->damping.b_stiffness, -_modal->damping.a_mass,
+           Kv.vec());
+  // M with 1 on the diagonal of the rows without mass, and r = 0 there.
+  Mat Mr;
+  MatDuplicate(_M.mat(), MAT_COPY_VALUES, &Mr);
+  Vector d = linalg::column_vector(_K.mat());
+  MatGetDiagonal(Mr, d.vec());
+  double* dd = nullptr;
+  double* rr = nullptr;
+  PetscInt n = 0;
+  VecGetLocalSize(d.vec(), &n);
+  VecGetArray(d.vec(), &dd);
+  VecGetArray(r.vec(), &rr);
+  for (PetscInt i = 0; i < n; ++i)
+  {
+    if (dd[i] == 0.0)
+    {
+      dd[i] = 1.0;
+      rr[i] = 0.0;
+    }
+  }
+  VecRestoreArray(r.vec(), &rr);
+  VecRestoreArray(d.vec(), &dd);
+  MatDiagonalSet(Mr, d.vec(), INSERT_VALUES);
+  Matrix M_reg(Mr, false);
+  linalg::DirectSolver solver(_comm, _s.factorization);
+  solver.factorize(M_reg.mat());
+  Vector da = linalg::column_vector(_K.mat());
+  solver.solve(r.vec(), da.vec());
+  VecAXPY(_a0.vec(), 1.0, da.vec());
+  return {nullptr, _v0.vec(), _a0.vec()};
 }
 
 void LinearSeismicAnalysis::add_recorders(engine::TimeHistory& history)
@@ -186,7 +250,8 @@ void LinearSeismicAnalysis::add_recorders(engine::TimeHistory& history)
   // their envelopes (dam only) and faces.
   _s_field = linalg::row_vector(_B.mat());
   _stresses = std::make_unique<StressRecorder>(
-      results::StressEnvelope(*_fe.S(), region_cells(_fe.model(), tags::dam)),
+      results::StressEnvelope(*_fe.S(),
+                              region_cells(_fe.model(), _s.dam_regions)),
       [this]() -> std::span<const double>
       {
         if (_s.stress_total)
@@ -198,8 +263,8 @@ void LinearSeismicAnalysis::add_recorders(engine::TimeHistory& history)
       });
   const auto model = _fe.model();
   for (const auto& [name, face_tags] : _s.faces)
-    _face_points.push_back(
-        results::face_points(*_fe.S(), *model.facet_tags, face_tags));
+    _face_points.push_back(results::face_points(
+        *_fe.S(), _s.face_tags ? *_s.face_tags : *model.facet_tags, face_tags));
   // Crest and base histories; in 2D the upstream face's displacement
   // envelope; the fields.
   _points = std::make_unique<PointHistories>(*_fe.V(), _s.crest_point,
@@ -221,8 +286,14 @@ void LinearSeismicAnalysis::add_recorders(engine::TimeHistory& history)
       },
       *_stresses);
 
+  // Displacement, velocity and acceleration at the named points.
+  _point_states = std::make_unique<PointStates>(
+      *_fe.V(), _s.history_points, _s.steps, *_stepper, *_u,
+      [this](int k, int c)
+      { return _s.motion[c].active ? _s.motion[c].acceleration[k] : 0.0; });
+
   for (engine::Observer* o : std::initializer_list<engine::Observer*>{
-           _u.get(), _stresses.get(), _points.get()})
+           _u.get(), _stresses.get(), _points.get(), _point_states.get()})
     history.observe(*o);
   if (_face_u)
     history.observe(*_face_u);
@@ -243,7 +314,8 @@ json LinearSeismicAnalysis::results()
                           crest_static, base_static, false, dir / "crest.csv");
 
   const auto& envelope = _stresses->envelope();
-  results::write_envelopes(_fe, envelope, region_cells(_fe.model(), tags::dam),
+  results::write_envelopes(_fe, envelope,
+                           region_cells(_fe.model(), _s.dam_regions),
                            dir / "envelopes.xdmf");
   if (_face_u)
     _face_u->write_csv(_comm, dir / "displacement_envelope.csv");
@@ -254,6 +326,9 @@ json LinearSeismicAnalysis::results()
       {_static_seconds, _modal->seconds, _stepper->factor_seconds(),
        _run.loop_seconds, _run.restarted_from_step});
   summary.update(crest_summary);
+  if (!_s.history_points.empty())
+    summary["history_points"] =
+        _point_states->write_csv(_comm, _s.scheme.dt, dir / "histories.csv");
   summary["wall_seconds"] = seconds_since(_wall_start);
   print_summary_line(_comm, summary);
   return summary;
@@ -262,11 +337,10 @@ json LinearSeismicAnalysis::results()
 
 std::unique_ptr<SeismicAnalysis>
 linear_seismic_analysis(fem::ElasticModel& fe, const SeismicSettings& s,
-                        const std::vector<Vec>& extra_static_loads,
-                        const RunFolder& folder, Mat tie)
+                        const ModelLoads& loads, const RunFolder& folder,
+                        Mat tie)
 {
-  return std::make_unique<LinearSeismicAnalysis>(fe, s, extra_static_loads,
-                                                 folder, tie);
+  return std::make_unique<LinearSeismicAnalysis>(fe, s, loads, folder, tie);
 }
 } // namespace damseis::analysis
 

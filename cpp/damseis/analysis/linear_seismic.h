@@ -7,6 +7,7 @@
 
 #include "seismic_analysis.h"
 #include "seismic_settings.h"
+#include "timed_loads.h"
 #include <damseis/fem/elastic_model.h>
 #include <filesystem>
 #include <memory>
@@ -14,6 +15,16 @@
 
 namespace damseis::analysis
 {
+/// Loads of a model besides dead weight, water and the ground motion
+/// (full-space vectors, zero at fixed dofs; they must outlive the
+/// analysis).
+struct ModelLoads
+{
+  std::vector<Vec> static_loads;  ///< silt, uplift, body forces
+  std::vector<TimedLoad> timed;   ///< tractions with a time history
+  Vec initial_velocity = nullptr; ///< full space; null: at rest
+};
+
 /// The analysis on `fe` (materials and fixed boundaries already set)
 /// that writes into `folder.dir` (created): summary.json, crest.csv,
 /// fields.xdmf, envelopes.xdmf, modes.xdmf, face_<name>.csv, case_used.toml.
@@ -27,21 +38,23 @@ namespace damseis::analysis
 ///
 /// `tie` (optional, from fem::tie_prolongation) ties coincident dofs
 /// (bonded joints): the system is solved for u_r with u = P u_r.
-/// `extra_static_loads` (full-space vectors, zero at fixed dofs: silt,
-/// uplift) are added to the static stage.
+/// `loads`: the static loads are added to the static stage, the timed ones
+/// to the ground motion's in the time history; with an initial velocity
+/// the initial acceleration satisfies M a = f - C v (at the dofs with
+/// mass).
 std::unique_ptr<SeismicAnalysis>
 linear_seismic_analysis(fem::ElasticModel& fe, const SeismicSettings& settings,
-                        const std::vector<Vec>& extra_static_loads,
-                        const RunFolder& folder, Mat tie = nullptr);
+                        const ModelLoads& loads, const RunFolder& folder,
+                        Mat tie = nullptr);
 
 /// All phases of that analysis; returns the summary.
-inline nlohmann::json
-run_linear_seismic(fem::ElasticModel& fe, const SeismicSettings& settings,
-                   const std::vector<Vec>& extra_static_loads,
-                   const RunFolder& folder, Mat tie = nullptr)
+inline nlohmann::json run_linear_seismic(fem::ElasticModel& fe,
+                                         const SeismicSettings& settings,
+                                         const ModelLoads& loads,
+                                         const RunFolder& folder,
+                                         Mat tie = nullptr)
 {
-  return linear_seismic_analysis(fe, settings, extra_static_loads, folder, tie)
-      ->run();
+  return linear_seismic_analysis(fe, settings, loads, folder, tie)->run();
 }
 } // namespace damseis::analysis
 

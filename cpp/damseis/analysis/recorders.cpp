@@ -1,6 +1,7 @@
 #include "recorders.h"
 #include <damseis/engine/checkpoint.h>
 #include <damseis/linalg/petsc_vectors.h>
+#include <fstream>
 
 namespace damseis::analysis
 {
@@ -105,6 +106,116 @@ const std::vector<double>& PointHistories::reduce(MPI_Comm comm)
 {
   results::reduce_history(comm, _hist);
   return _hist;
+}
+
+PointStates::PointStates(const dolfinx::fem::FunctionSpace& V,
+                         const std::vector<NamedPoint>& points, int steps,
+                         const engine::Stepper& stepper,
+                         const FullDisplacement& full,
+                         std::function<double(int, int)> ground)
+    : _dim(V.dofmap()->index_map_bs()), _stepper(stepper), _full(full),
+      _ground(std::move(ground))
+{
+  for (const auto& [name, x] : points)
+  {
+    _names.push_back(name);
+    _probes.emplace_back(V, x);
+  }
+  _hist.assign((steps + 1) * _probes.size() * 4 * _dim, 0.0);
+}
+
+void PointStates::record(int k, double)
+{
+  const std::size_t n = _probes.size();
+  if (n == 0)
+    return;
+  const std::array<Vec, 3> states = {_stepper.u(), _stepper.v(), _stepper.a()};
+  for (int q = 0; q < 3; ++q)
+  {
+    const Vec x = _full.full(states[q]);
+    for (std::size_t p = 0; p < n; ++p)
+    {
+      const auto value = _probes[p].value(x);
+      for (int c = 0; c < _dim; ++c)
+      {
+        double* row = &_hist[((k * n + p) * 4) * _dim];
+        row[q * _dim + c] = value[c];
+        // The absolute acceleration on the owner (0 elsewhere: summed).
+        if (q == 2)
+          row[3 * _dim + c] =
+              value[c] + (_probes[p].owned() ? _ground(k, c) : 0.0);
+      }
+    }
+  }
+}
+
+void PointStates::save(engine::Arrays& arrays) const
+{
+  arrays["point_states"] = _hist;
+}
+
+void PointStates::restore(const engine::CheckpointData& d)
+{
+  if (_probes.empty())
+    return;
+  _hist = engine::checkpoint_array(d, "point_states", _hist.size());
+}
+
+nlohmann::json PointStates::write_csv(MPI_Comm comm, double dt,
+                                      const std::filesystem::path& file)
+{
+  nlohmann::json peaks = nlohmann::json::object();
+  const std::size_t n = _probes.size();
+  if (n == 0)
+    return peaks;
+  results::reduce_history(comm, _hist);
+  const std::size_t row = n * 4 * _dim;
+  const std::size_t steps = _hist.size() / row;
+  const char* axis = "xyz";
+  const char* quantity[4] = {"u", "v", "a", "a"};
+  const char* unit[4] = {"m", "m_per_s", "m_per_s2", "abs_m_per_s2"};
+  for (std::size_t p = 0; p < n; ++p)
+  {
+    double peak[4] = {0, 0, 0, 0};
+    for (std::size_t k = 0; k < steps; ++k)
+      for (int q = 0; q < 4; ++q)
+      {
+        double norm2 = 0.0;
+        for (int c = 0; c < _dim; ++c)
+        {
+          const double v = _hist[k * row + (p * 4 + q) * _dim + c];
+          norm2 += v * v;
+        }
+        peak[q] = std::max(peak[q], std::sqrt(norm2));
+      }
+    const auto& node = _probes[p].node();
+    peaks[_names[p]] = {{"node", {node[0], node[1], node[2]}},
+                        {"max_displacement_m", peak[0]},
+                        {"max_velocity_m_per_s", peak[1]},
+                        {"max_acceleration_m_per_s2", peak[2]},
+                        {"max_absolute_acceleration_m_per_s2", peak[3]}};
+  }
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  if (rank != 0)
+    return peaks;
+  std::ofstream out(file);
+  out << "t_s";
+  for (std::size_t p = 0; p < n; ++p)
+    for (int q = 0; q < 4; ++q)
+      for (int c = 0; c < _dim; ++c)
+        out << "," << _names[p] << "_" << quantity[q] << axis[c] << "_"
+            << unit[q];
+  out << "\n";
+  out.precision(10);
+  for (std::size_t k = 0; k < steps; ++k)
+  {
+    out << k * dt;
+    for (std::size_t j = 0; j < row; ++j)
+      out << "," << _hist[k * row + j];
+    out << "\n";
+  }
+  return peaks;
 }
 
 FaceDisplacementRecorder::FaceDisplacementRecorder(

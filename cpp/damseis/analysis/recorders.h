@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <span>
 
@@ -83,6 +84,36 @@ private:
   int _dim;
   const FullDisplacement& _u;
   std::vector<double> _hist;
+};
+
+/// Displacement, velocity and acceleration relative to the supports, and
+/// the absolute acceleration (with the ground's), at named points (the
+/// nearest nodes), per step; on the owning rank until written.
+class PointStates : public engine::Observer
+{
+public:
+  using NamedPoint = std::pair<std::string, std::array<double, 3>>;
+  /// `ground(k, c)`: the ground acceleration of component c at step k.
+  PointStates(const dolfinx::fem::FunctionSpace& V,
+              const std::vector<NamedPoint>& points, int steps,
+              const engine::Stepper& stepper, const FullDisplacement& full,
+              std::function<double(int, int)> ground);
+  void record(int k, double t) override;
+  void save(engine::Arrays& arrays) const override;
+  void restore(const engine::CheckpointData& data) override;
+  /// histories.csv on rank 0 (t, then per point u, v, a, a_abs by
+  /// component) and the summary's peaks per point. Collective.
+  nlohmann::json write_csv(MPI_Comm comm, double dt,
+                           const std::filesystem::path& file);
+
+private:
+  std::vector<std::string> _names;
+  std::vector<results::PointProbe> _probes;
+  int _dim;
+  const engine::Stepper& _stepper;
+  const FullDisplacement& _full;
+  std::function<double(int, int)> _ground;
+  std::vector<double> _hist; ///< per step, point, quantity, component
 };
 
 /// Envelope of the horizontal displacement along a tagged face relative to

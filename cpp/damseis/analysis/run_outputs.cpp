@@ -38,11 +38,18 @@ json extreme_json(const results::Extreme& e, int dim)
 
 std::vector<std::int32_t> region_cells(const geometry::Model& m, int region)
 {
+  return region_cells(m, std::vector<int>{region});
+}
+
+std::vector<std::int32_t> region_cells(const geometry::Model& m,
+                                       const std::vector<int>& regions)
+{
   std::vector<std::int32_t> cells;
   const auto& tags = *m.cell_tags;
   for (std::size_t i = 0; i < tags.indices().size(); ++i)
   {
-    if (tags.values()[i] == region)
+    if (std::find(regions.begin(), regions.end(), tags.values()[i]) !=
+        regions.end())
       cells.push_back(tags.indices()[i]);
   }
   return cells;

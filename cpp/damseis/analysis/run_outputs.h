@@ -26,6 +26,9 @@ double instant(double t);
 nlohmann::json extreme_json(const results::Extreme& e, int dim);
 /// Local cells (owned and ghost) of a region tag.
 std::vector<std::int32_t> region_cells(const geometry::Model& m, int region);
+/// Local cells (owned and ghost) of any of these region tags.
+std::vector<std::int32_t> region_cells(const geometry::Model& m,
+                                       const std::vector<int>& regions);
 
 /// Wall seconds since t0.
 double seconds_since(std::chrono::steady_clock::time_point t0);

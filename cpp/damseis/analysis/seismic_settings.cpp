@@ -299,7 +299,8 @@ SeismicSettings read_seismic_settings(const input::Case& c,
                                       const std::vector<Direction>& directions,
                                       int dim, double crest_elevation,
                                       const std::array<double, 3>& crest,
-                                      const std::array<double, 3>& base)
+                                      const std::array<double, 3>& base,
+                                      bool motion_optional)
 {
   SeismicSettings g;
   g.gravity = c.real("loads.gravity");
@@ -354,11 +355,21 @@ SeismicSettings read_seismic_settings(const input::Case& c,
     any = any || m.active;
     g.motion[d.component] = std::move(m);
   }
-  if (!any)
+  if (!any && !motion_optional)
   {
     c.fail("motion." + directions.front().name + ".record",
            "is empty, and so are the other components",
            "at least one ground-motion record");
+  }
+  if (!any && duration > 0.0)
+  {
+    // No ground motion (other loads drive the model): the steps of the
+    // duration.
+    if (duration / g.scheme.dt > max_steps)
+      fail_steps(c, duration / g.scheme.dt);
+    g.motion[0].acceleration.assign(
+        static_cast<std::size_t>(std::llround(duration / g.scheme.dt)) + 1,
+        0.0);
   }
   // With duration 0, shorter records are padded with zeros to the longest.
   std::size_t samples = 0;

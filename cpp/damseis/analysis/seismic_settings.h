@@ -50,7 +50,15 @@ struct SeismicSettings
   bool stress_total = true; ///< envelopes of static + seismic stress
   std::array<double, 3> crest_point = {0, 0, 0};
   std::array<double, 3> base_point = {0, 0, 0};
-  /// Faces whose envelope extremes are reported: (name, facet tags).
+  /// The cell tags of the dam (stress envelopes): geometry::tags::dam in
+  /// the built models, the user's groups in dam_model.
+  std::vector<int> dam_regions = {1};
+  /// Named points whose displacement, velocity and acceleration are
+  /// recorded (histories.csv).
+  std::vector<std::pair<std::string, std::array<double, 3>>> history_points;
+  /// Faces whose envelope extremes are reported: (name, facet tags), the
+  /// tags of `face_tags` (null: the model's facet tags).
+  std::shared_ptr<const dolfinx::mesh::MeshTags<std::int32_t>> face_tags;
   std::vector<std::pair<std::string, std::vector<int>>> faces;
   /// Points where the elastic stress is unbounded (results/
   /// singular_points.h), what they are, and the radius around them that
@@ -75,12 +83,15 @@ void add_seismic_keys(input::Schema& schema,
 /// Reads and checks the shared keys, loads and scales the records. `dim` is
 /// the spatial dimension; `crest_elevation` bounds the reservoir level;
 /// `crest` and `base` are used when output.crest_point / output.base_point
-/// are empty. Throws input::InputError naming the file and key.
+/// are empty. With `motion_optional` every record may be empty (other
+/// loads drive the model): the run then lasts time.duration (which must be
+/// given). Throws input::InputError naming the file and key.
 SeismicSettings read_seismic_settings(const input::Case& c,
                                       const std::vector<Direction>& directions,
                                       int dim, double crest_elevation,
                                       const std::array<double, 3>& crest,
-                                      const std::array<double, 3>& base);
+                                      const std::array<double, 3>& base,
+                                      bool motion_optional = false);
 /// Refuses an output point (key `key`, e.g. "output.crest_point") that is
 /// `distance` m from the model, more than `tolerance` (the mesh size: the
 /// history would be that of some node far from the point asked for).

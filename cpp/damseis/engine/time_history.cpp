@@ -11,18 +11,21 @@ TimeHistory::TimeHistory(MPI_Comm comm, TimeHistorySettings settings,
 {
 }
 
-int TimeHistory::start(Vec u0, Vec f)
+int TimeHistory::start(const InitialState& initial, Vec f)
 {
   std::optional<CheckpointData> restart;
   if (_s.restart)
     restart = read_checkpoint(_comm, _s.checkpoint_dir, _s.fingerprint);
   if (!restart)
   {
-    // From rest under the load at t = 0.
+    // From the initial state (at rest by default) under the load at t = 0.
     dolfinx::la::petsc::Vector a0(_stepper.create_vector(), false);
-    _load.initial_acceleration(a0.vec());
+    if (initial.a)
+      VecCopy(initial.a, a0.vec());
+    else
+      _load.initial_acceleration(a0.vec());
     _load.assemble(0, f);
-    _stepper.start(u0, nullptr, a0.vec(), f);
+    _stepper.start(initial.u, initial.v, a0.vec(), f);
     return 0;
   }
   restore_collectively(_comm, _s.checkpoint_dir,
@@ -49,12 +52,12 @@ void TimeHistory::write_checkpoint(int k) const
   engine::write_checkpoint(_comm, _s.checkpoint_dir, data, _s.fingerprint);
 }
 
-TimeHistoryReport TimeHistory::run(Vec u0)
+TimeHistoryReport TimeHistory::run(const InitialState& initial)
 {
   const int n = _s.steps;
   const double dt = _s.dt;
   dolfinx::la::petsc::Vector f(_stepper.create_vector(), false);
-  const int k0 = start(u0, f.vec());
+  const int k0 = start(initial, f.vec());
   for (Observer* o : _observers)
     o->begin(k0);
 

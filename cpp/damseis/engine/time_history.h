@@ -26,6 +26,13 @@ struct TimeHistorySettings
   std::uint64_t fingerprint = 0;
 };
 
+/// The state the run starts from (fresh runs); null members: the stepper's
+/// own initial displacement, zero velocity, the load's initial acceleration.
+struct InitialState
+{
+  Vec u = nullptr, v = nullptr, a = nullptr;
+};
+
 struct TimeHistoryReport
 {
   int restarted_from_step = 0; ///< 0 for a fresh run
@@ -41,16 +48,15 @@ public:
   TimeHistory(MPI_Comm comm, TimeHistorySettings settings, Stepper& stepper,
               const DynamicLoad& load);
   void observe(Observer& observer) { _observers.push_back(&observer); }
-  /// Starts (from rest, or from the checkpoint with settings.restart) and
-  /// runs to the last step. `u0`: initial displacement (see
-  /// Stepper::start). Throws Interrupted after writing a checkpoint on a
-  /// stop request, dynamics::StepFailure (with the step and time) if a step
-  /// cannot be solved. Collective.
-  TimeHistoryReport run(Vec u0 = nullptr);
+  /// Starts (from `initial`, or from the checkpoint with settings.restart)
+  /// and runs to the last step. Throws Interrupted after writing a checkpoint
+  /// on a stop request, dynamics::StepFailure (with the step and time) if a
+  /// step cannot be solved. Collective.
+  TimeHistoryReport run(const InitialState& initial = {});
 
 private:
   /// The step to start from: 0, or the checkpoint's (everything restored).
-  int start(Vec u0, Vec f);
+  int start(const InitialState& initial, Vec f);
   void write_checkpoint(int k) const;
 
   MPI_Comm _comm;

@@ -24,7 +24,8 @@ std::map<std::string, PhysicalGroup> parse_group_lines(const std::string& text)
   std::istringstream in(text);
   PhysicalGroup g;
   std::string name;
-  while (in >> g.dim >> g.tag && std::getline(in >> std::ws, name))
+  // "dim tag name": one space before the name, which is kept as it is.
+  while (in >> g.dim >> g.tag && in.get() == ' ' && std::getline(in, name))
     groups[name] = g;
   return groups;
 }
@@ -94,8 +95,8 @@ MeshFile read_mesh_file(MPI_Comm comm, const std::filesystem::path& file)
           {"", file.string() + ": gmsh failed while reading it"});
   groups = broadcast_from_root(comm, groups);
   MPI_Bcast(&out.tdim, 1, MPI_INT, 0, comm);
-  if (rank != 0)
-    out.groups = parse_group_lines(groups);
+  // Every rank (rank 0 too) holds the groups parsed from the same text.
+  out.groups = parse_group_lines(groups);
   out.model = model_from_gmsh(comm, out.tdim);
   return out;
 }

@@ -196,8 +196,9 @@ std::string suggest(const std::vector<Key>& keys, const std::string& unknown)
 // Values
 // ---------------------------------------------------------------------------
 
-using Value = std::variant<bool, std::int64_t, double, std::string,
-                           std::vector<double>, std::vector<std::int64_t>>;
+using Value =
+    std::variant<bool, std::int64_t, double, std::string, std::vector<double>,
+                 std::vector<std::int64_t>, std::vector<std::string>>;
 
 /// A value as a TOML literal.
 std::string value_text(const Value& value)
@@ -220,6 +221,13 @@ std::string value_text(const Value& value)
       std::string out = "[";
       for (std::size_t i = 0; i < v.size(); ++i)
         out += (i ? ", " : "") + std::to_string(v[i]);
+      return out + "]";
+    }
+    std::string operator()(const std::vector<std::string>& v) const
+    {
+      std::string out = "[";
+      for (std::size_t i = 0; i < v.size(); ++i)
+        out += (i ? ", " : "") + quote(v[i]);
       return out + "]";
     }
   };
@@ -311,6 +319,9 @@ std::string expected_text(const Key& key)
   case Type::integer_array:
     text = "an array of integers, e.g. [1, 3]";
     break;
+  case Type::string_array:
+    text = "an array of strings, e.g. [\"dam\", \"rock\"]";
+    break;
   }
   if (!key.unit.empty() && key.unit != "-")
     text += " (" + key.unit + ")";
@@ -387,6 +398,20 @@ std::variant<Value, std::string> convert(const Key& key, const toml::node& node)
       return Value(std::move(values));
     }
     break;
+  case Type::string_array:
+    if (const auto* a = node.as_array())
+    {
+      std::vector<std::string> values;
+      for (const toml::node& element : *a)
+      {
+        if (const auto* t = element.as_string())
+          values.push_back(t->get());
+        else
+          return wrong("has an element that is " + node_type_text(element));
+      }
+      return Value(std::move(values));
+    }
+    break;
   }
   return wrong("is " + node_type_text(node));
 }
@@ -456,8 +481,9 @@ std::string check(const Key& key, const Value& value)
 std::optional<toml::table> parse_literal(const Key& key, const std::string& raw)
 {
   std::string text = trim(raw);
-  const bool is_array =
-      key.type == Type::real_array || key.type == Type::integer_array;
+  const bool is_array = key.type == Type::real_array ||
+                        key.type == Type::integer_array ||
+                        key.type == Type::string_array;
   if (is_array && (text.empty() || text.front() != '['))
     text = "[" + text + "]";
   std::optional<toml::table> result;
@@ -474,6 +500,20 @@ std::optional<toml::table> parse_literal(const Key& key, const std::string& raw)
   {
     result = toml::table{};
     result->insert("v", text);
+  }
+  if (key.type == Type::string_array && !result)
+  {
+    // Bare words: [dam, rock] or dam,rock.
+    toml::array words;
+    std::string inner = text.substr(1, text.size() - 2), word;
+    std::stringstream in(inner);
+    while (std::getline(in, word, ','))
+    {
+      if (!trim(word).empty())
+        words.push_back(trim(word));
+    }
+    result = toml::table{};
+    result->insert("v", std::move(words));
   }
   return result;
 }
@@ -526,6 +566,8 @@ std::string type_name(Type type)
     return "real[]";
   case Type::integer_array:
     return "int[]";
+  case Type::string_array:
+    return "string[]";
   }
   return "?";
 }
@@ -555,7 +597,8 @@ std::string Key::constraint_text() const
 
 KeyBuilder& KeyBuilder::bound(bool lower_bound, double x, bool exclusive)
 {
-  if (_key->type == Type::boolean || _key->type == Type::string)
+  if (_key->type == Type::boolean || _key->type == Type::string ||
+      _key->type == Type::string_array)
     throw_logic("bounds set on " + type_name(_key->type) + " key " +
                 _key->path);
   if (!std::isfinite(x))
@@ -679,6 +722,14 @@ KeyBuilder Schema::real_array(const std::string& path,
   return add(path, Type::real_array, default_value, unit, help);
 }
 
+KeyBuilder Schema::string_array(const std::string& path,
+                                const std::string& default_value,
+                                const std::string& unit,
+                                const std::string& help)
+{
+  return add(path, Type::string_array, default_value, unit, help);
+}
+
 KeyBuilder Schema::integer_array(const std::string& path,
                                  const std::string& default_value,
                                  const std::string& unit,
@@ -712,7 +763,9 @@ void Schema::validate() const
 {
   for (const Key& key : _keys)
   {
-    const bool numeric = key.type != Type::boolean && key.type != Type::string;
+    const bool numeric = key.type != Type::boolean &&
+                         key.type != Type::string &&
+                         key.type != Type::string_array;
     if (!numeric && (key.min || key.max))
       throw_logic("bounds set on " + type_name(key.type) + " key " + key.path);
     if (key.type != Type::string && !key.choices.empty())
@@ -1069,6 +1122,12 @@ std::vector<std::int64_t> Case::integers(const std::string& key) const
 {
   return std::get<std::vector<std::int64_t>>(
       entry(key, Type::integer_array).value);
+}
+
+std::vector<std::string> Case::strings(const std::string& key) const
+{
+  return std::get<std::vector<std::string>>(
+      entry(key, Type::string_array).value);
 }
 
 std::filesystem::path Case::path(const std::string& key) const

@@ -58,16 +58,17 @@ std::string printable_line(std::string_view text);
 /// Type of the value of a key.
 enum class Type
 {
-  boolean,      ///< TOML boolean: true / false
-  integer,      ///< TOML integer
-  real,         ///< TOML float; an integer literal is accepted too
-  string,       ///< TOML string; a bare word is accepted in --set
-  real_array,   ///< array of numbers (integer literals accepted)
-  integer_array ///< array of integers
+  boolean,       ///< TOML boolean: true / false
+  integer,       ///< TOML integer
+  real,          ///< TOML float; an integer literal is accepted too
+  string,        ///< TOML string; a bare word is accepted in --set
+  real_array,    ///< array of numbers (integer literals accepted)
+  integer_array, ///< array of integers
+  string_array   ///< array of strings (e.g. names of mesh groups)
 };
 
 /// Short name of a type as shown by --help: "bool", "int", "real", "string",
-/// "real[]", "int[]".
+/// "real[]", "int[]", "string[]".
 std::string type_name(Type type);
 
 /// One key of a case file.
@@ -157,6 +158,11 @@ public:
                            const std::string& default_value,
                            const std::string& unit, const std::string& help);
 
+  /// An array of strings, e.g. "[\"dam\", \"rock\"]" (in --set also
+  /// dam,rock).
+  KeyBuilder string_array(const std::string& path,
+                          const std::string& default_value,
+                          const std::string& unit, const std::string& help);
   /// All keys, in declaration order.
   const std::vector<Key>& keys() const { return _keys; }
   /// The key with this dotted path, or nullptr.
@@ -203,6 +209,7 @@ public:
   std::string string(const std::string& key) const;
   std::vector<double> reals(const std::string& key) const;
   std::vector<std::int64_t> integers(const std::string& key) const;
+  std::vector<std::string> strings(const std::string& key) const;
 
   /// A string key holding a path, resolved relative to the directory of the
   /// case file (absolute paths are kept; an empty string gives an empty
@@ -232,8 +239,9 @@ public:
   std::string to_toml() const;
 
 private:
-  using Value = std::variant<bool, std::int64_t, double, std::string,
-                             std::vector<double>, std::vector<std::int64_t>>;
+  using Value =
+      std::variant<bool, std::int64_t, double, std::string, std::vector<double>,
+                   std::vector<std::int64_t>, std::vector<std::string>>;
   struct Entry
   {
     Value value;

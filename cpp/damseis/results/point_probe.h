@@ -16,6 +16,8 @@ public:
   PointProbe(const dolfinx::fem::FunctionSpace& V, std::array<double, 3> x);
   /// Where the probe actually is (the node's coordinates).
   const std::array<double, 3>& node() const { return _node; }
+  /// True on the rank that owns the node (and records its values).
+  bool owned() const { return _local >= 0; }
   /// Distance from the requested point to the node [m].
   double distance() const { return _distance; }
   /// Values of the node's components in `u` (owner rank; 0 elsewhere).

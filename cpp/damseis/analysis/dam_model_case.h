@@ -1,0 +1,87 @@
+// Case keys of `dam_model`, the analysis of the user's own mesh: the mesh
+// file, its physical groups mapped to roles (material regions, supports,
+// reservoir-wetted faces, joints, loaded faces, output faces), loads beyond
+// ground motion (tractions with a time history, body forces, initial
+// velocity), histories at named points, and the shared seismic keys.
+#pragma once
+
+#include "seismic_settings.h"
+#include <array>
+#include <damseis/fem/elastic_model.h>
+#include <damseis/geometry/mesh_file.h>
+#include <damseis/input/case.h>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace damseis::analysis
+{
+/// A region of cells (a physical group of the mesh's top dimension) and
+/// its material.
+struct Region
+{
+  std::string group;
+  fem::Material material; ///< rho = 0: massless
+  bool dam = false;       ///< part of the dam (envelopes, crest)
+};
+
+/// A vector quantity on a physical group (traction [Pa], body force
+/// [N/m3], initial velocity [m/s]); components beyond the mesh's dimension
+/// are zero.
+struct GroupVector
+{
+  std::string group;
+  std::array<double, 3> value = {0, 0, 0};
+};
+
+struct DamModelConfig
+{
+  /// The mesh, read and checked (collective; every rank holds its part).
+  /// Its facet tags are renumbered for the model (facet_tag()); the
+  /// groups' own tags stay in `group_facets`.
+  std::shared_ptr<geometry::MeshFile> mesh;
+  std::shared_ptr<const dolfinx::mesh::MeshTags<std::int32_t>> group_facets;
+  /// Distance of coincident joint nodes [m] (the joint check's).
+  double joint_tolerance = 1e-8;
+  std::filesystem::path mesh_file;
+  int dim = 2;
+  int order = 2;
+  fem::PlaneMode plane = fem::PlaneMode::plane_strain;
+  std::vector<Region> regions;
+  std::vector<std::string> fixed;  ///< facet groups with every dof fixed
+  std::vector<std::string> wetted; ///< facet groups the reservoir wets
+  std::vector<std::string> floor;  ///< reservoir floor (reservoir.load_floor)
+  /// Joints: (side 1, side 2) facet groups of duplicated nodes; tied.
+  std::vector<std::pair<std::string, std::string>> joints;
+  std::vector<GroupVector> tractions;   ///< times traction_history
+  std::vector<double> traction_history; ///< per step, starting at 0
+  std::string traction_history_kind;    ///< "step", "pulse" or a file
+  std::vector<GroupVector> body_forces; ///< static, with the dead weight
+  std::vector<GroupVector> initial_velocity;
+  /// Facet groups whose stress envelopes are tabulated (face_<group>.csv).
+  std::vector<std::string> faces;
+  /// Named points where displacement, velocity and acceleration are
+  /// recorded (histories.csv).
+  std::vector<std::pair<std::string, std::array<double, 3>>> history_points;
+  SeismicSettings seismic;
+};
+
+/// Ground-motion components along the mesh axes x, y and z (the last axis
+/// of the mesh is vertical).
+const std::vector<Direction>& dam_model_directions();
+
+input::Schema dam_model_schema();
+
+/// Reads the keys and the mesh (collective on MPI_COMM_WORLD) and checks
+/// them together: every group named exists with the right dimension, every
+/// cell has a material, joint sides match node for node, no degenerate
+/// cell. Throws input::InputError (one line naming the file and key or
+/// group).
+DamModelConfig read_dam_model_config(const input::Case& c);
+
+/// The tag a facet group of the configuration carries in its model's facet
+/// tags (the wetted faces and the floor take the tags the compiled forms
+/// integrate over; the others their own number shifted by 1000).
+int facet_tag(const DamModelConfig& cfg, const std::string& group);
+} // namespace damseis::analysis

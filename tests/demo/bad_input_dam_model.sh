@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Bad input to dam_model (issue 18): a missing physical group, a group of
+# the wrong dimension, a cell group without a material, arrays of the wrong
+# length, names listed twice, unmatched and non-conforming joint sides, a
+# load on interior facets, a degenerate cell, a point outside the model: one line naming the file, the key and the fix,
+# exit code 2, nothing written.
+# Usage: bad_input_dam_model.sh DAM_MODEL SOURCE_DIR
+set -u
+exe=$1 src=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+source "$(dirname "$0")/expect.sh"
+block=$src/demos/dam_model/block_3d.toml
+cases=$src/tests/data/case
+
+expect dm_no_mesh 'section_2d\.toml: mesh\.file: .*nothere\.msh: no such mesh file' --set mesh.file=nothere.msh
+expect dm_not_a_mesh 'section_2d\.toml: mesh\.file: .*gmsh' --set mesh.file=section_2d.toml
+expect dm_missing_group 'supports\.fixed: names "nowhere", which is not a physical group.*"dam_base"' --set 'supports.fixed=[nowhere]'
+expect dm_wrong_dimension 'supports\.fixed: names "dam", a group of dimension 2; expected a group of facets' --set 'supports.fixed=[dam]'
+expect dm_no_support 'supports\.fixed: is empty' --set 'supports.fixed=[]'
+expect dm_material_count 'regions\.E: has 2 values for 1 regions' --set 'regions.E=[1e9, 2e9]'
+expect dm_cell_group_without_material 'regions\.groups: does not list the cell group "block_right"' --case "$block" --set 'regions.groups=[block_left]' --set 'regions.E=[24e9]' --set 'regions.nu=[0.2]' --set 'regions.rho=[2400]' --set 'regions.dam=[block_left]'
+expect dm_two_roles 'reservoir\.wetted: names "dam_base", which supports\.fixed names too' --set 'reservoir.wetted=[dam_base]'
+expect dm_unmatched_joint 'block_3d\.toml: joints\.side2: joint sides "joint_left" and "upstream" do not match' --case "$block" --set 'joints.side2=[upstream]'
+expect dm_joint_count 'joints\.side2: has 0 groups for 1' --case "$block" --set 'joints.side2=[]'
+expect dm_nonconforming_joint 'dam_model_nonconforming\.toml: joints\.side2: .* are not conforming' --case "$cases/dam_model_nonconforming.toml"
+expect dm_degenerate_cell 'dam_model_degenerate\.toml: mesh\.file: has 1 degenerate cells' --case "$cases/dam_model_degenerate.toml"
+expect dm_point_outside 'output\.history_points: puts a point .* from the nearest node' --set 'output.history_points=[0, 500, 5, 5]'
+expect dm_z_motion_in_2d 'motion\.z\.record: is given for a 2D mesh' --set motion.z.record=../../data/records/elcentro_1940_ns.at2
+expect dm_traction_components 'loads\.traction: has 3 values for 1 groups' --set 'loads.traction_groups=[crest]' --set 'loads.traction=[0, 1, 2]'
+expect dm_history_file 'loads\.traction_history: .*nofile\.txt' --set 'loads.traction_groups=[crest]' --set 'loads.traction=[0, -1e5]' --set loads.traction_history=nofile.txt
+expect dm_region_twice 'regions\.groups: lists "dam" twice' --set 'regions.groups=[dam, dam]' --set 'regions.E=[1e9, 1e9]' --set 'regions.nu=[0.2, 0.2]' --set 'regions.rho=[1, 1]'
+expect dm_history_name_twice 'output\.history_names: lists "a" twice' --set 'output.history_names=[a, a]' --set 'output.history_points=[0, 100, 0, 100]'
+expect dm_interior_traction 'loads\.traction_groups: names "joint_left", which has .* facets inside the model' --case "$block" --set mesh.file=meshes/block_jointless.msh --set 'joints.side1=[]' --set 'joints.side2=[]' --set 'loads.traction_groups=[joint_left]' --set 'loads.traction=[0, 0, -1e5]'
+
+if [ "$failures" -ne 0 ]; then
+  echo "$failures bad-input checks failed"; exit 1
+fi
+echo "all bad-input checks passed"
