@@ -68,11 +68,12 @@ class ConcreteRecorder : public engine::Observer
 {
 public:
   ConcreteRecorder(const fem::ConcreteModel& cm, const StressRecorder& stresses,
-                   std::int32_t points)
+                   std::int32_t points, int dim)
       : _envelopes{ScalarEnvelope(points), ScalarEnvelope(points),
                    ScalarEnvelope(points, -HUGE_VAL),
                    ScalarEnvelope(points, -HUGE_VAL)},
-        _cm(cm), _stresses(stresses), _syy(points)
+        _cm(cm), _stresses(stresses), _nc(cm.components()), _vertical(dim - 1),
+        _syy(points)
   {
   }
   void record(int, double t) override
@@ -81,7 +82,7 @@ public:
     kt_rate().update(_cm.kappa_t_rate(), t);
     const auto s = _stresses.stress();
     for (std::size_t i = 0; i < _syy.size(); ++i)
-      _syy[i] = s[3 * i + 1];
+      _syy[i] = s[_nc * i + _vertical];
     syy_max().update(_syy, t);
     for (double& v : _syy)
       v = -v;
@@ -121,6 +122,8 @@ private:
                                                        "syy_hi", "syy_lo"};
   const fem::ConcreteModel& _cm;
   const StressRecorder& _stresses;
+  /// Stress components per point; the vertical normal stress' index.
+  int _nc, _vertical;
   std::vector<double> _syy;
 };
 
@@ -154,15 +157,25 @@ results::Extreme scalar_extreme(MPI_Comm comm, const ScalarEnvelope& e,
   return {global.v, {data[0], data[1], data[2]}, data[3]};
 }
 
-/// Global number of cells of a region.
+/// The concrete of every region of the bulk.
+std::map<int, material::ConcreteParameters>
+concrete_regions(const ConcreteBulk& bulk)
+{
+  std::map<int, material::ConcreteParameters> m;
+  for (int r : bulk.regions)
+    m[r] = bulk.concrete.params;
+  return m;
+}
+
+/// Global number of cells of the regions.
 std::int64_t region_cell_count(MPI_Comm comm, const geometry::Model& model,
-                               int region)
+                               const std::vector<int>& regions)
 {
   const std::int32_t owned = model.mesh->topology()
                                  .index_map(model.mesh->topology().dim())
                                  ->size_local();
   std::int64_t n = 0;
-  for (std::int32_t c : region_cells(model, region))
+  for (std::int32_t c : region_cells(model, regions))
     n += c < owned ? 1 : 0;
   MPI_Allreduce(MPI_IN_PLACE, &n, 1, MPI_INT64_T, MPI_SUM, comm);
   return n;
@@ -177,36 +190,45 @@ double concrete_characteristic_length(const ConcreteSettings& c)
 }
 
 /// dam_points.csv on rank 0: one row per owned dam point of every rank.
-void write_dam_points(MPI_Comm comm, const results::StressEnvelope& env,
+void write_dam_points(MPI_Comm comm, int dim,
+                      const results::StressEnvelope& env,
                       const std::vector<std::int8_t>& in_dam,
                       const std::vector<const std::vector<double>*>& columns,
                       const std::filesystem::path& file)
 {
-  const int nc = 4 + static_cast<int>(columns.size());
+  const int nc = dim + 2 + static_cast<int>(columns.size());
   std::vector<double> local;
   for (std::size_t i = 0; i < in_dam.size(); ++i)
   {
     if (!in_dam[i])
       continue;
     const auto& x = env.point(static_cast<std::int32_t>(i));
-    local.insert(local.end(), {x[0], x[1], env.max_principal()[i] * 1e-6,
+    local.insert(local.end(), x.begin(), x.begin() + dim);
+    local.insert(local.end(), {env.max_principal()[i] * 1e-6,
                                env.min_principal()[i] * 1e-6});
     for (const auto* c : columns)
       local.push_back((*c)[i]);
   }
+  // The vertical stress is sigma_yy in 2D, sigma_zz in 3D.
+  const std::string v = dim == 2 ? "syy" : "szz";
   write_rows_csv(comm, local, nc,
-                 "x_m,y_m,max_principal_mpa,min_principal_mpa,kappa_t,kappa_c,"
-                 "max_strain_rate_per_s,t_max_strain_rate_s,"
-                 "max_kappa_t_rate_per_s,max_syy_mpa,min_syy_mpa",
+                 std::string(dim == 2 ? "x_m,y_m," : "x_m,y_m,z_m,") +
+                     "max_principal_mpa,min_principal_mpa,kappa_t,kappa_c,"
+                     "max_strain_rate_per_s,t_max_strain_rate_s,"
+                     "max_kappa_t_rate_per_s,max_" +
+                     v + "_mpa,min_" + v + "_mpa",
                  file);
 }
 
-/// {"value", "x", "y"(, "t")} of a scalar extreme, scaled.
-json scalar_json(const results::Extreme& e, double scale, bool with_time)
+/// {"value", "x", "y"(, "z")(, "t")} of a scalar extreme, scaled.
+json scalar_json(const results::Extreme& e, double scale, bool with_time,
+                 int dim)
 {
   json j = {{"value", scale * e.value},
             {"x", coordinate(e.x[0])},
             {"y", coordinate(e.x[1])}};
+  if (dim == 3)
+    j["z"] = coordinate(e.x[2]);
   if (with_time)
     j["t"] = instant(e.t);
   return j;
@@ -284,7 +306,8 @@ json newton_json(const dynamics::NewtonSettings& newton,
 /// "softening studies"): P2 elements, cells above the snap-back limit.
 void print_crack_band_notes(MPI_Comm comm, const fem::ElasticModel& fe,
                             const fem::ConcreteModel& cm,
-                            const ConcreteSettings& concrete)
+                            const ConcreteSettings& concrete,
+                            const std::vector<int>& regions)
 {
   if (fe.degree() > 1)
   {
@@ -301,7 +324,7 @@ void print_crack_band_notes(MPI_Comm comm, const fem::ElasticModel& fe,
   std::ostringstream note;
   note.precision(3);
   note << "note: " << cm.cells_with_reduced_strength() << " of "
-       << region_cell_count(comm, fe.model(), tags::dam)
+       << region_cell_count(comm, fe.model(), regions)
        << " dam cells are larger than E Gf / ("
        << concrete.params.snap_back_safety
        << " ft^2) = " << concrete_characteristic_length(concrete)
@@ -377,8 +400,7 @@ ConcreteSeismicAnalysis::ConcreteSeismicAnalysis(
     const std::vector<Vec>& extra_static_loads, RunFolder folder)
     : _fe(fe), _s(s), _bulk(std::move(bulk)), _folder(std::move(folder)),
       _comm(fe.mesh()->comm()),
-      _cm(fe, {{tags::dam, _bulk.concrete.params}}, _bulk.elastic, _bulk.plane),
-      _system(_cm)
+      _cm(fe, concrete_regions(_bulk), _bulk.elastic, _bulk.plane), _system(_cm)
 {
   results::set_stage("assembly");
   const ConcreteSettings& concrete = _bulk.concrete;
@@ -390,7 +412,7 @@ ConcreteSeismicAnalysis::ConcreteSeismicAnalysis(
   _plastic = concrete.kind != ConcreteModelKind::elastic;
   _cm.set_implex(concrete.implex && _plastic);
   if (_plastic)
-    print_crack_band_notes(_comm, fe, _cm, concrete);
+    print_crack_band_notes(_comm, fe, _cm, concrete, _bulk.regions);
 
   // The static loads: dead weight, then the reservoir (and silt, uplift).
   std::array<double, 3> g = {0, 0, 0};
@@ -483,7 +505,7 @@ void ConcreteSeismicAnalysis::add_recorders(engine::TimeHistory& history)
   auto Sq = _cm.stress_space();
   const std::int32_t n_pts = Sq->dofmap()->index_map->size_local();
   _in_dam.assign(n_pts, 0);
-  for (std::int32_t c : region_cells(model, tags::dam))
+  for (std::int32_t c : region_cells(model, _bulk.regions))
   {
     for (std::int32_t d : Sq->dofmap()->cell_dofs(c))
     {
@@ -495,7 +517,7 @@ void ConcreteSeismicAnalysis::add_recorders(engine::TimeHistory& history)
   // The stresses (seismic: less the static ones, unless total asked).
   _s_field.resize(_cm.stress().size());
   _stresses = std::make_unique<StressRecorder>(
-      results::StressEnvelope(3, _cm.coordinates(), _in_dam),
+      results::StressEnvelope(_cm.components(), _cm.coordinates(), _in_dam),
       [this]() -> std::span<const double>
       {
         auto sig = _cm.stress();
@@ -503,10 +525,12 @@ void ConcreteSeismicAnalysis::add_recorders(engine::TimeHistory& history)
           _s_field[i] = _s.stress_total ? sig[i] : sig[i] - _sig_static[i];
         return _s_field;
       });
-  _concrete_state = std::make_unique<ConcreteRecorder>(_cm, *_stresses, n_pts);
+  _concrete_state =
+      std::make_unique<ConcreteRecorder>(_cm, *_stresses, n_pts, _fe.dim());
   for (const auto& [name, face_tags] : _s.faces)
-    _face_points.push_back(
-        results::face_points(*Sq, *model.facet_tags, face_tags, false));
+    _face_points.push_back(results::face_points(
+        *Sq, _s.face_tags ? *_s.face_tags : *model.facet_tags, face_tags,
+        false));
   _points = std::make_unique<PointHistories>(*_fe.V(), _s.crest_point,
                                              _s.base_point, _s.steps, *_u);
   // Envelope of the seismic horizontal displacement along the upstream
@@ -585,7 +609,8 @@ void ConcreteSeismicAnalysis::write_concrete_outputs(json& summary) const
   std::copy(state.rate().max.begin(), state.rate().max.end(), rate_all.begin());
   std::copy(state.kt_rate().max.begin(), state.kt_rate().max.end(),
             kt_rate_all.begin());
-  results::write_envelopes(_fe, envelope, region_cells(_fe.model(), tags::dam),
+  results::write_envelopes(_fe, envelope,
+                           region_cells(_fe.model(), _bulk.regions),
                            dir / "envelopes.xdmf", _cm.stress_space(), false,
                            {{"kappa_t", _cm.kappa_t()},
                             {"kappa_c", _cm.kappa_c()},
@@ -599,7 +624,7 @@ void ConcreteSeismicAnalysis::write_concrete_outputs(json& summary) const
     syy_hi[i] = 1e-6 * state.syy_max().max[i];
     syy_lo[i] = -1e-6 * state.syy_min().max[i];
   }
-  write_dam_points(_comm, envelope, _in_dam,
+  write_dam_points(_comm, _fe.dim(), envelope, _in_dam,
                    {&kt, &kc, &state.rate().max, &state.rate().t,
                     &state.kt_rate().max, &syy_hi, &syy_lo},
                    dir / "dam_points.csv");
@@ -608,14 +633,16 @@ void ConcreteSeismicAnalysis::write_concrete_outputs(json& summary) const
   kt_final.update(_cm.kappa_t(), _s.steps * _s.scheme.dt);
   const auto x = _cm.coordinates();
   summary["concrete"] = concrete_json(_bulk.concrete, _cm, _fe.degree());
-  summary["max_kappa_t"] =
-      scalar_json(scalar_extreme(_comm, kt_final, x, _in_dam), 1.0, false);
-  summary["max_strain_rate_per_s"] =
-      scalar_json(scalar_extreme(_comm, state.rate(), x, _in_dam), 1.0, true);
-  summary["max_vertical_stress_mpa"] = scalar_json(
-      scalar_extreme(_comm, state.syy_max(), x, _in_dam), 1e-6, true);
-  summary["min_vertical_stress_mpa"] = scalar_json(
-      scalar_extreme(_comm, state.syy_min(), x, _in_dam), -1e-6, true);
+  summary["max_kappa_t"] = scalar_json(
+      scalar_extreme(_comm, kt_final, x, _in_dam), 1.0, false, _fe.dim());
+  summary["max_strain_rate_per_s"] = scalar_json(
+      scalar_extreme(_comm, state.rate(), x, _in_dam), 1.0, true, _fe.dim());
+  summary["max_vertical_stress_mpa"] =
+      scalar_json(scalar_extreme(_comm, state.syy_max(), x, _in_dam), 1e-6,
+                  true, _fe.dim());
+  summary["min_vertical_stress_mpa"] =
+      scalar_json(scalar_extreme(_comm, state.syy_min(), x, _in_dam), -1e-6,
+                  true, _fe.dim());
 }
 } // namespace
 

@@ -24,6 +24,8 @@ struct ConcreteBulk
   ConcreteSettings concrete;
   std::map<int, fem::Material> elastic;
   fem::PlaneMode plane = fem::PlaneMode::plane_strain;
+  /// The cell tags made of this concrete (the dam).
+  std::vector<int> regions = {1};
 };
 
 /// The analysis on `fe` (fixed boundaries set; its materials are the

@@ -1,4 +1,5 @@
 #include "concrete_model.h"
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -34,10 +35,6 @@ struct RowMajor
   }
 };
 
-/// Voigt (11, 22, 33, 12, 23, 13) indices of the in-plane components
-/// (xx, yy, xy).
-constexpr int plane_index[3] = {0, 1, 3};
-
 /// |a - b|^2 in the Frobenius norm of the stress tensors (Voigt 6, shears
 /// counted twice): the norm of HtcConcrete::admissible_radius.
 double tensor_distance2(const material::Vector6& a, const material::Vector6& b)
@@ -50,12 +47,16 @@ double tensor_distance2(const material::Vector6& a, const material::Vector6& b)
 }
 
 /// Largest absolute principal value of a strain (rate) in Voigt form with
-/// engineering shear; plane: xy only.
+/// engineering shear.
 double max_abs_principal_strain(const std::array<double, 6>& e)
 {
-  const double c = 0.5 * (e[0] + e[1]);
-  const double r = std::hypot(0.5 * (e[0] - e[1]), 0.5 * e[3]);
-  return std::max({std::abs(c + r), std::abs(c - r), std::abs(e[2])});
+  Eigen::Matrix3d t;
+  t << e[0], 0.5 * e[3], 0.5 * e[5], 0.5 * e[3], e[1], 0.5 * e[4], 0.5 * e[5],
+      0.5 * e[4], e[2];
+  const Eigen::Vector3d l =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(t, Eigen::EigenvaluesOnly)
+          .eigenvalues();
+  return std::max(std::abs(l[0]), std::abs(l[2]));
 }
 } // namespace
 
@@ -67,6 +68,11 @@ ConcreteModel::ConcreteModel(
 {
   auto mesh = fe.model().mesh;
   const int tdim = mesh->topology().dim();
+  if (tdim == 3)
+  {
+    _nc = 6;
+    _voigt = {0, 1, 2, 3, 4, 5};
+  }
   _Sq = std::make_shared<dfem::FunctionSpace>(
       dfem::create_functionspace(_forms.space_of_residual, "sig", mesh));
   _Cq = std::make_shared<dfem::FunctionSpace>(
@@ -101,8 +107,8 @@ ConcreteModel::ConcreteModel(
         std::map<std::string, std::shared_ptr<const dfem::Function<double>>>{},
         std::map<std::string, std::shared_ptr<const dfem::Constant<double>>>{},
         mesh);
-    std::vector<double> xq(np * 2);
-    RowMajor view{xq.data(), static_cast<std::size_t>(_nq) * 2};
+    std::vector<double> xq(np * tdim);
+    RowMajor view{xq.data(), static_cast<std::size_t>(_nq) * tdim};
     position.eval(std::span<const std::int32_t>(_cells), view);
     const auto& dm = *_Sq->dofmap();
     const std::int32_t ndofs =
@@ -118,11 +124,11 @@ ConcreteModel::ConcreteModel(
         const std::size_t p = static_cast<std::size_t>(c) * _nq + q;
         _dof[p] = dofs[q];
         _dof_c[p] = _Cq->dofmap()->cell_dofs(c)[q];
-        _coords[3 * dofs[q]] = xq[2 * p];
-        _coords[3 * dofs[q] + 1] = xq[2 * p + 1];
+        for (int k = 0; k < tdim; ++k)
+          _coords[3 * dofs[q] + k] = xq[tdim * p + k];
       }
     }
-    _sig_committed.assign(3 * ndofs, 0.0);
+    _sig_committed.assign(_nc * ndofs, 0.0);
     for (auto& o : _out)
       o.assign(ndofs, 0.0);
   }
@@ -142,8 +148,12 @@ ConcreteModel::ConcreteModel(
     const int r = region[c];
     auto v = gdofs.links(c);
     auto d = [&](int k, int j) { return x[3 * v[k] + j] - x[3 * v[0] + j]; };
-    const double area = 0.5 * std::abs(d(1, 0) * d(2, 1) - d(1, 1) * d(2, 0));
-    const double h = std::sqrt(2.0 * area);
+    const double h =
+        tdim == 2 ? std::sqrt(std::abs(d(1, 0) * d(2, 1) - d(1, 1) * d(2, 0)))
+                  : std::cbrt(std::abs(
+                        d(1, 0) * (d(2, 1) * d(3, 2) - d(2, 2) * d(3, 1)) -
+                        d(1, 1) * (d(2, 0) * d(3, 2) - d(2, 2) * d(3, 0)) +
+                        d(1, 2) * (d(2, 0) * d(3, 1) - d(2, 1) * d(3, 0))));
     const auto it = concrete.find(r);
     const int bin =
         it == concrete.end()
@@ -213,7 +223,7 @@ ConcreteModel::ConcreteModel(
   _eps.assign(np, {0, 0, 0, 0, 0, 0});
   _eps_trial = _eps;
   _dep = _eps;
-  _strain_values.assign(np * 3, 0.0);
+  _strain_values.assign(np * _nc, 0.0);
   // Initial tangent: elastic.
   std::span<double> ct = _Ct->x()->mutable_array();
   for (std::int32_t c = 0; c < _num_cells; ++c)
@@ -221,7 +231,8 @@ ConcreteModel::ConcreteModel(
     const auto D = _dynamic[_cell_material[c]]->elastic_tangent();
     for (int q = 0; q < _nq; ++q)
     {
-      condense(D, &ct[9 * _dof_c[static_cast<std::size_t>(c) * _nq + q]]);
+      condense(D,
+               &ct[_nc * _nc * _dof_c[static_cast<std::size_t>(c) * _nq + q]]);
     }
   }
 }
@@ -232,16 +243,7 @@ bool ConcreteModel::elastic_point(
     const std::array<double, 6>& eps_old, const double* e,
     std::array<double, 6>& eps_new, material::State& out, double* ct) const
 {
-  const material::Vector6 de = {
-      e[0] - eps_old[0],
-      e[1] - eps_old[1],
-      _plane == PlaneMode::plane_stress
-          ? -m.derived().nu / (1.0 - m.derived().nu) *
-                ((e[0] - eps_old[0]) + (e[1] - eps_old[1]))
-          : 0.0,
-      e[2] - eps_old[3],
-      0.0,
-      0.0};
+  const material::Vector6 de = strain_increment(e, eps_old, m.derived().nu);
   const material::Matrix6& D = _De[material];
   material::Vector6 tr;
   for (int i = 0; i < 6; ++i)
@@ -251,7 +253,7 @@ bool ConcreteModel::elastic_point(
       v += D[i * 6 + j] * de[j];
     tr[i] = v;
   }
-  if (_plane == PlaneMode::plane_stress)
+  if (_nc == 3 && _plane == PlaneMode::plane_stress)
   {
     // integrate_point()'s test of sigma_zz = 0 (its first iterate is this).
     double smax = 0.0;
@@ -269,7 +271,7 @@ bool ConcreteModel::elastic_point(
   out.kappa_c_rate = out.kappa_t_rate = 0.0;
   for (int i = 0; i < 6; ++i)
     eps_new[i] = eps_old[i] + de[i];
-  std::copy_n(_ct_elastic[material].data(), 9, ct);
+  std::copy_n(_ct_elastic[material].data(), _nc * _nc, ct);
   return true;
 }
 
@@ -279,10 +281,9 @@ material::Update ConcreteModel::integrate_point(
     std::array<double, 6>& eps_new, double* ct, int& return_maps,
     std::int64_t& local_iterations) const
 {
-  material::Vector6 de = {
-      e[0] - eps_old[0], e[1] - eps_old[1], 0.0, e[2] - eps_old[3], 0.0, 0.0};
+  material::Vector6 de = strain_increment(e, eps_old, -1.0);
   material::Update up;
-  if (_plane == PlaneMode::plane_strain)
+  if (_nc == 6 || _plane == PlaneMode::plane_strain)
   {
     up = m.integrate(old, de, dt);
     return_maps = 1;
@@ -314,7 +315,7 @@ material::Update ConcreteModel::integrate_point(
   // of such a point stays (near) zero, as it should; the global residual
   // still decides convergence. (Thresholds from 1e-6 to 5e-2 gave identical
   // rcc_gravity runs (4 s); 1e-1 breaks the finite-difference tangent test.)
-  if (_plane == PlaneMode::plane_stress)
+  if (_nc == 3 && _plane == PlaneMode::plane_stress)
   {
     const double e22 = m.elastic_tangent()[2 * 6 + 2];
     if (!(std::abs(up.tangent[2 * 6 + 2]) >= 1e-6 * e22))
@@ -326,17 +327,34 @@ material::Update ConcreteModel::integrate_point(
 
 void ConcreteModel::condense(const material::Matrix6& T, double* ct) const
 {
-  for (int i = 0; i < 3; ++i)
+  const bool plane_stress = _nc == 3 && _plane == PlaneMode::plane_stress;
+  for (int i = 0; i < _nc; ++i)
   {
-    for (int j = 0; j < 3; ++j)
+    for (int j = 0; j < _nc; ++j)
     {
-      double v = T[plane_index[i] * 6 + plane_index[j]];
-      if (_plane == PlaneMode::plane_stress)
-        v -= T[plane_index[i] * 6 + 2] * T[2 * 6 + plane_index[j]] /
-             T[2 * 6 + 2];
-      ct[i * 3 + j] = v;
+      double v = T[_voigt[i] * 6 + _voigt[j]];
+      if (plane_stress)
+        v -= T[_voigt[i] * 6 + 2] * T[2 * 6 + _voigt[j]] / T[2 * 6 + 2];
+      ct[i * _nc + j] = v;
     }
   }
+}
+
+material::Vector6 ConcreteModel::strain_increment(
+    const double* e, const std::array<double, 6>& eps_old, double nu) const
+{
+  if (_nc == 6)
+  {
+    material::Vector6 de;
+    for (int i = 0; i < 6; ++i)
+      de[i] = e[i] - eps_old[i];
+    return de;
+  }
+  const double d0 = e[0] - eps_old[0], d1 = e[1] - eps_old[1];
+  const double dzz = _plane == PlaneMode::plane_stress && nu >= 0.0
+                         ? -nu / (1.0 - nu) * (d0 + d1)
+                         : 0.0;
+  return {d0, d1, dzz, e[2] - eps_old[3], 0.0, 0.0};
 }
 
 MaterialUpdateStats ConcreteModel::update(const dfem::Function<double>& u,
@@ -344,7 +362,7 @@ MaterialUpdateStats ConcreteModel::update(const dfem::Function<double>& u,
 {
   std::copy(u.x()->array().begin(), u.x()->array().end(),
             _u->x()->mutable_array().begin());
-  RowMajor view{_strain_values.data(), static_cast<std::size_t>(_nq) * 3};
+  RowMajor view{_strain_values.data(), static_cast<std::size_t>(_nq) * _nc};
   _strain->eval(std::span<const std::int32_t>(_cells), view);
   _trial_dt = dt;
   if (trial_extrapolated())
@@ -377,12 +395,13 @@ MaterialUpdateStats ConcreteModel::update_points(double dt)
     {
       const std::size_t p = static_cast<std::size_t>(c) * _nq + q;
       const std::int32_t dof = _dof[p];
-      double* ct_p = &ct[9 * _dof_c[p]];
+      double* ct_p = &ct[_nc * _nc * _dof_c[p]];
       if (elastic_point(m, _cell_material[c], _ball[p], _state[p], _eps[p],
-                        &_strain_values[3 * p], _eps_trial[p], _trial[p], ct_p))
+                        &_strain_values[_nc * p], _eps_trial[p], _trial[p],
+                        ct_p))
       {
-        for (int i = 0; i < 3; ++i)
-          sig[3 * dof + i] = _trial[p].stress[plane_index[i]];
+        for (int i = 0; i < _nc; ++i)
+          sig[_nc * dof + i] = _trial[p].stress[_voigt[i]];
         counts[0] += c < _num_owned_cells;
         continue;
       }
@@ -395,7 +414,7 @@ MaterialUpdateStats ConcreteModel::update_points(double dt)
       std::int64_t its = 0;
       const auto t0 = std::chrono::steady_clock::now();
       const material::Update up =
-          integrate_point(m, _state[p], _eps[p], &_strain_values[3 * p], dt,
+          integrate_point(m, _state[p], _eps[p], &_strain_values[_nc * p], dt,
                           _eps_trial[p], ct_p, maps, its);
       if (c < _num_owned_cells)
       {
@@ -405,8 +424,8 @@ MaterialUpdateStats ConcreteModel::update_points(double dt)
         ++counts[6];
       }
       _trial[p] = up.state;
-      for (int i = 0; i < 3; ++i)
-        sig[3 * dof + i] = up.state.stress[plane_index[i]];
+      for (int i = 0; i < _nc; ++i)
+        sig[_nc * dof + i] = up.state.stress[_voigt[i]];
       if (!up.converged && std::getenv("DAMSEIS_MATERIAL_TRACE"))
       {
         const auto& o = _state[p];
@@ -420,8 +439,8 @@ MaterialUpdateStats ConcreteModel::update_points(double dt)
             o.kappa_c, o.kappa_t, o.kappa_c_rate, o.kappa_t_rate, o.stress[0],
             o.stress[1], o.stress[2], o.stress[3], o.stress[4], o.stress[5],
             _eps_trial[p][0] - _eps[p][0], _eps_trial[p][1] - _eps[p][1],
-            _eps_trial[p][2] - _eps[p][2], _eps_trial[p][3] - _eps[p][3], 0.0,
-            0.0);
+            _eps_trial[p][2] - _eps[p][2], _eps_trial[p][3] - _eps[p][3],
+            _eps_trial[p][4] - _eps[p][4], _eps_trial[p][5] - _eps[p][5]);
       }
       if (c < _num_owned_cells)
       {
@@ -470,12 +489,27 @@ void ConcreteModel::extrapolate_stress(double dt)
     for (int q = 0; q < _nq; ++q)
     {
       const std::size_t p = static_cast<std::size_t>(c) * _nq + q;
-      const double* e = &_strain_values[3 * p];
+      const double* e = &_strain_values[_nc * p];
       const auto& eps = _eps[p];
       const auto& dep = _dep[p];
       const auto& s0 = _state[p].stress;
-      double* out = &sig[3 * _dof[p]];
-      if (_plane == PlaneMode::plane_stress)
+      double* out = &sig[_nc * _dof[p]];
+      if (_nc == 6)
+      {
+        // The elastic strain increment, extrapolated plastic part removed.
+        double de[6];
+        for (int j = 0; j < 6; ++j)
+          de[j] = e[j] - eps[j] - r * dep[j];
+        const auto& D = _De[mat];
+        for (int i = 0; i < 6; ++i)
+        {
+          double v = s0[i];
+          for (int j = 0; j < 6; ++j)
+            v += D[6 * i + j] * de[j];
+          out[i] = v;
+        }
+      }
+      else if (_plane == PlaneMode::plane_stress)
       {
         // sigma_zz stays 0: the condensed elastic matrix on the in-plane
         // elastic strain increment.
@@ -484,8 +518,8 @@ void ConcreteModel::extrapolate_stress(double dt)
                               e[2] - eps[3] - r * dep[3]};
         const auto& D = _ct_elastic[mat];
         for (int i = 0; i < 3; ++i)
-          out[i] = s0[plane_index[i]] + D[3 * i] * de[0] +
-                   D[3 * i + 1] * de[1] + D[3 * i + 2] * de[2];
+          out[i] = s0[_voigt[i]] + D[3 * i] * de[0] + D[3 * i + 1] * de[1] +
+                   D[3 * i + 2] * de[2];
       }
       else
       {
@@ -499,14 +533,15 @@ void ConcreteModel::extrapolate_stress(double dt)
         const auto& D = _De[mat];
         for (int i = 0; i < 3; ++i)
         {
-          const int row = plane_index[i];
+          const int row = _voigt[i];
           double v = s0[row];
           for (int j = 0; j < 6; ++j)
             v += D[6 * row + j] * de[j];
           out[i] = v;
         }
       }
-      std::copy_n(_ct_elastic[mat].data(), 9, &ct[9 * _dof_c[p]]);
+      std::copy_n(_ct_elastic[mat].data(), _nc * _nc,
+                  &ct[_nc * _nc * _dof_c[p]]);
     }
   }
 }
@@ -623,7 +658,7 @@ void ConcreteModel::assemble_extrapolation_change(Vec f) const
     // Per point sig(implicit) - sig(extrapolated); cells where it is below
     // 1e-9 ft0 at every point (elastic points: round-off) are left out.
     std::span<const double> sig = _sig->x()->array();
-    const int stride = 3 * _nq;
+    const int stride = _nc * _nq;
     std::vector<std::int32_t> cells;
     _coeff_work.clear();
     for (std::int32_t c = 0; c < _num_owned_cells; ++c)
@@ -633,9 +668,9 @@ void ConcreteModel::assemble_extrapolation_change(Vec f) const
       for (int q = 0; q < _nq && !differs; ++q)
       {
         const std::int32_t d = _dof[static_cast<std::size_t>(c) * _nq + q];
-        for (int k = 0; k < 3; ++k)
-          differs |=
-              std::abs(sig[3 * d + k] - _sig_extrapolated[3 * d + k]) > small;
+        for (int k = 0; k < _nc; ++k)
+          differs |= std::abs(sig[_nc * d + k] -
+                              _sig_extrapolated[_nc * d + k]) > small;
       }
       if (!differs)
         continue;
@@ -643,8 +678,9 @@ void ConcreteModel::assemble_extrapolation_change(Vec f) const
       for (int q = 0; q < _nq; ++q)
       {
         const std::int32_t d = _dof[static_cast<std::size_t>(c) * _nq + q];
-        for (int k = 0; k < 3; ++k)
-          _coeff_work.push_back(sig[3 * d + k] - _sig_extrapolated[3 * d + k]);
+        for (int k = 0; k < _nc; ++k)
+          _coeff_work.push_back(sig[_nc * d + k] -
+                                _sig_extrapolated[_nc * d + k]);
       }
     }
     // The residual form's kernel on those cells, with that coefficient.
@@ -709,8 +745,9 @@ void ConcreteModel::add_tangent_change(Mat A, double scale) const
   }
   // The tangent coefficient of the listed cells minus the elastic one,
   // packed per cell as DOLFINx packs a quadrature coefficient (the cell's
-  // points in dofmap order, 9 values each); the form is linear in it.
-  const int cstride = 9 * _nq;
+  // points in dofmap order, nc^2 values each); the form is linear in it.
+  const int nt = _nc * _nc;
+  const int cstride = nt * _nq;
   _coeff_work.resize(_tangent_cells.size() * cstride);
   std::span<const double> ct = _Ct->x()->array();
   for (std::size_t i = 0; i < _tangent_cells.size(); ++i)
@@ -720,8 +757,9 @@ void ConcreteModel::add_tangent_change(Mat A, double scale) const
     for (int q = 0; q < _nq; ++q)
     {
       const std::int32_t d = _dof_c[static_cast<std::size_t>(c) * _nq + q];
-      for (int k = 0; k < 9; ++k)
-        _coeff_work[i * cstride + 9 * q + k] = scale * (ct[9 * d + k] - ce[k]);
+      for (int k = 0; k < nt; ++k)
+        _coeff_work[i * cstride + nt * q + k] =
+            scale * (ct[nt * d + k] - ce[k]);
     }
   }
   const auto ids = _a->integral_ids(dfem::IntegralType::cell);

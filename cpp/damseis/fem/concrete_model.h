@@ -39,19 +39,23 @@ struct MaterialUpdateStats
   int max_iterations = 0; ///< largest local Newton count
 };
 
-/// Material state at the quadrature points of a 2D model.
+/// Material state at the quadrature points of a 2D or 3D model.
 ///
 /// Every region gets an HtcConcrete: the regions listed in `concrete` use
 /// those parameters (their `mode` selects elastic / plastic / viscoplastic),
 /// all others stay linear elastic with the ElasticModel's material (given
-/// again in `elastic`). The crack-band width of a cell is h = sqrt(2 A)
-/// (the side of the square that two right triangles of area A make; exact
-/// for a band of such elements across a structured mesh), rounded to 1%
-/// bins so that cells of similar size share a material object (the energy
-/// error of the rounding is below 0.5%).
+/// again in `elastic`). The crack-band width of a cell is h = sqrt(2 A) in
+/// 2D (the side of the square that two right triangles of area A make) and
+/// h = (6 V)^(1/3) in 3D (the edge of the cube that six tetrahedra of
+/// volume V make): exact for a band of such elements across a structured
+/// mesh. It is rounded to 1% bins so that cells of similar size share a
+/// material object (the energy error of the rounding is below 0.5%).
 ///
-/// Plane strain: eps_zz = 0. Plane stress: eps_zz is solved per point by
-/// Newton on sigma_zz = 0 (the tangent is condensed accordingly).
+/// The stress and tangent coefficients have the components of the forms:
+/// (xx, yy, xy) in 2D, (xx, yy, zz, xy, yz, xz) in 3D (components()).
+/// 2D plane strain: eps_zz = 0. Plane stress: eps_zz is solved per point by
+/// Newton on sigma_zz = 0 (the tangent is condensed accordingly). In 3D
+/// `plane` is ignored.
 ///
 /// Static steps (dt = 0) use the rate-independent version of each material
 /// (R = 1, as algorithms.md 6.4 asks for the static stage).
@@ -63,6 +67,8 @@ public:
                 const std::map<int, Material>& elastic, PlaneMode plane);
 
   ElasticModel& elastic_model() { return _fe; }
+  /// Stress components of the coefficients: 3 in 2D (xx, yy, xy), 6 in 3D.
+  int components() const { return _nc; }
 
   /// Updates the trial state for the displacement `u` (a Function on V with
   /// ghosts up to date) reached over the time step `dt` (0: static) from
@@ -214,10 +220,21 @@ private:
   std::shared_ptr<dolfinx::fem::Form<double>> _L, _a;
   std::unique_ptr<dolfinx::fem::Expression<double>> _strain;
   std::vector<std::unique_ptr<material::HtcConcrete>> _dynamic, _static;
-  /// Per material: the elastic 6x6 and condensed 3x3 tangents (the same for
+  /// Stress components of the forms (3 in 2D, 6 in 3D) and their Voigt
+  /// indices in the material's 6.
+  int _nc = 3;
+  std::array<int, 6> _voigt = {0, 1, 3, 0, 0, 0};
+  /// The material's strain increment (6 Voigt components) of a point whose
+  /// strain (form components) is e and whose committed strain is eps_old;
+  /// plane stress: eps_zz from the elastic sigma_zz = 0 with `nu` (nu < 0:
+  /// eps_zz = 0).
+  material::Vector6 strain_increment(const double* e,
+                                     const std::array<double, 6>& eps_old,
+                                     double nu) const;
+  /// Per material: the elastic 6x6 and condensed tangents (the same for
   /// the dynamic and the static object), for the elastic-trial fast path.
   std::vector<material::Matrix6> _De;
-  std::vector<std::array<double, 9>> _ct_elastic;
+  std::vector<std::array<double, 36>> _ct_elastic;
   std::vector<std::int32_t> _cell_material; ///< per local cell
   std::vector<std::int32_t> _dof;           ///< point p -> Sq dof (block)
   std::vector<std::int32_t> _dof_c;         ///< point p -> Cq dof (block)

@@ -5,6 +5,8 @@
 #include <elasticity_3d_p2.h>
 #include <plasticity_2d_p1.h>
 #include <plasticity_2d_p2.h>
+#include <plasticity_3d_p1.h>
+#include <plasticity_3d_p2.h>
 #include <stdexcept>
 
 namespace damseis::fem
@@ -51,17 +53,19 @@ const FormSet& form_set(int dim, int degree)
 
 const PlasticityFormSet& plasticity_form_set(int dim, int degree)
 {
-  static const PlasticityFormSet sets[2] = {
+  static const PlasticityFormSet sets[4] = {
       DAMSEIS_PLASTICITY_SET(2, 1, plasticity_2d_p1),
-      DAMSEIS_PLASTICITY_SET(2, 2, plasticity_2d_p2)};
-  if (dim != 2 || (degree != 1 && degree != 2))
+      DAMSEIS_PLASTICITY_SET(2, 2, plasticity_2d_p2),
+      DAMSEIS_PLASTICITY_SET(3, 1, plasticity_3d_p1),
+      DAMSEIS_PLASTICITY_SET(3, 2, plasticity_3d_p2)};
+  if ((dim != 2 && dim != 3) || (degree != 1 && degree != 2))
   {
     throw std::invalid_argument(
-        "the nonlinear concrete model is available in 2D (degree 1 or 2) "
-        "only; got dimension " +
-        std::to_string(dim) + ", degree " + std::to_string(degree));
+        "no compiled nonlinear-material forms for dimension " +
+        std::to_string(dim) + ", degree " + std::to_string(degree) +
+        "; expected dimension 2 or 3, degree 1 or 2");
   }
-  return sets[degree - 1];
+  return sets[2 * (dim - 2) + (degree - 1)];
 }
 } // namespace damseis::fem
 #undef DAMSEIS_FORM_SET

@@ -36,7 +36,7 @@ struct FormSet
 const FormSet& form_set(int dim, int degree);
 
 /// The kernels of a nonlinear material with state at quadrature points
-/// (forms/plasticity_2d.py): internal force and tangent from the point
+/// (forms/plasticity_{2d,3d}.py): internal force and tangent from the point
 /// values, and the strain and position expressions at the same points.
 struct PlasticityFormSet
 {
@@ -50,7 +50,8 @@ struct PlasticityFormSet
   ufcx_function_space* (*space_of_tangent)(const char*) = nullptr;
 };
 
-/// The nonlinear-material kernels for `dim` = 2 and `degree` in {1, 2};
-/// throws std::invalid_argument otherwise (3D is not compiled yet).
+/// The nonlinear-material kernels for `dim` in {2, 3} and `degree` in
+/// {1, 2} (forms/plasticity_{2d,3d}.py); throws std::invalid_argument
+/// otherwise.
 const PlasticityFormSet& plasticity_form_set(int dim, int degree);
 } // namespace damseis::fem
