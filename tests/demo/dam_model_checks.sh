@@ -20,7 +20,11 @@
 #       2.9%, 1.7% low at dt = 2e-4, 1e-4, 5e-5 s; asserted: the error
 #       falls with dt and is below 2.5% at 5e-5;
 #  4. 2 MPI ranks give the serial crest history (3D block, tied joint:
-#     1e-8).
+#     1e-8);
+#  5. HTC viscoplastic concrete (P1, 4 m, Gf = 2000 N/m, 2 s): dam_model on
+#     the exported section equals the koyna demo (crest history and stress,
+#     kappa_t and strain-rate extremes: 1e-6, the Newton tolerance;
+#     measured 3e-13, the same Newton iterations).
 # Usage: dam_model_checks.sh BIN_DIR MPIEXEC PYTHON SOURCE_DIR
 set -eu
 bin=$1 mpiexec=$2 python=$3 src=$4
@@ -56,6 +60,14 @@ for dt in 0.0002 0.0001 0.00005; do
     --set 'initial.velocity_groups=[column]' --set 'initial.velocity=[0, 0.1]' \
     --set time.dt=$dt --set time.duration=0.01 >/dev/null
 done
+# 5. Viscoplastic concrete, koyna and dam_model.
+vp=(--set material.model=viscoplastic --set mesh.order=1 --set time.duration=2
+    --set concrete.Gf=2000)
+"$bin/koyna" --out "$work/koyna_vp" "${quiet[@]}" "${vp[@]}" --set mesh.size=4 \
+  --set output.mesh_file=true >/dev/null
+"$dm" --case "$section" --out "$work/section_vp" "${quiet[@]}" "${vp[@]}" \
+  --set mesh.file="$work/koyna_vp/model.msh" --set 'output.history_names=[]' \
+  --set 'output.history_points=[]' >/dev/null
 # 4. Two ranks.
 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
   OMPI_MCA_rmaps_base_oversubscribe=1 "$mpiexec" -n 2 "$dm" --case "$block" \
@@ -110,5 +122,10 @@ falls = errors[0] > errors[1] > errors[2] > 0
 ok = ok and falls
 print(f"{'ok  ' if falls else 'FAIL'} initial velocity error falls with dt")
 check("2 ranks crest history", history_diff("tied", "tied_2"), 1e-8)
+check("viscoplastic crest history", history_diff("koyna_vp", "section_vp"), 1e-6)
+for k in ("max_principal_tension_mpa", "max_principal_compression_mpa",
+          "max_kappa_t", "max_strain_rate_per_s"):
+    a, b = summary("koyna_vp")[k]["value"], summary("section_vp")[k]["value"]
+    check(f"viscoplastic {k}", abs(a / b - 1), 1e-6)
 sys.exit(0 if ok else 1)
 PY

@@ -12,6 +12,7 @@
 #include <damseis/geometry/tags.h>
 #include <damseis/linalg/modal.h>
 #include <dolfinx/common/IndexMap.h>
+#include <dolfinx/io/XDMFFile.h>
 #include <dolfinx/mesh/utils.h>
 #include <filesystem>
 #include <fstream>
@@ -239,3 +240,47 @@ TEST(MeshFile, KoynaSectionExportReadsBackTheSameModel)
   for (int i = 0; i < 3; ++i)
     EXPECT_NEAR(f_read[i], f_built[i], 1e-9 * f_built[i]) << "mode " << i + 1;
 }
+
+namespace
+{
+/// The Koyna section with its foundation (8 m mesh) written as DOLFINx
+/// writes meshes (XDMF: the mesh, cell tags and facet tags) and read back
+/// as the user's mesh: the same groups (named "<dim>:<tag>") and the same
+/// natural frequencies (1e-9: the same model, another dof numbering).
+TEST(MeshFile, XdmfReadsBackTheSameModel)
+{
+  namespace tags = damseis::tags;
+  const auto dir = shared_folder("koyna_xdmf");
+  const auto file = dir / "koyna.xdmf";
+  GravityDamSection s;
+  s.mesh_size = 8.0;
+  s.foundation = true;
+  s.foundation_width = 300.0;
+  s.foundation_depth = 100.0;
+  const Model built = build_gravity_dam(MPI_COMM_WORLD, s);
+  {
+    dolfinx::io::XDMFFile xdmf(MPI_COMM_WORLD, file, "w");
+    xdmf.write_mesh(*built.mesh);
+    const std::string geometry = "/Xdmf/Domain/Grid[@Name='mesh']/Geometry";
+    auto cells = *built.cell_tags;
+    cells.name = "cell_tags";
+    xdmf.write_meshtags(cells, geometry);
+    auto facets = *built.facet_tags;
+    facets.name = "facet_tags";
+    xdmf.write_meshtags(facets, geometry);
+  }
+  const MeshFile read = read_mesh_file(MPI_COMM_WORLD, file);
+  EXPECT_EQ(read.tdim, 2);
+  EXPECT_EQ(read.groups.at("2:" + std::to_string(tags::dam)).dim, 2);
+  EXPECT_EQ(read.groups.at("1:" + std::to_string(tags::dam_base)).dim, 1);
+  EXPECT_EQ(read.model.mesh->topology().index_map(2)->size_global(),
+            built.mesh->topology().index_map(2)->size_global());
+  const auto f_built = frequencies(built), f_read = frequencies(read.model);
+  ASSERT_EQ(f_read.size(), 3u);
+  for (int i = 0; i < 3; ++i)
+    EXPECT_NEAR(f_read[i], f_built[i], 1e-9 * f_built[i]) << "mode " << i + 1;
+  // A wrong grid name: one error, on every rank.
+  EXPECT_THROW(read_mesh_file(MPI_COMM_WORLD, file, {"mesh", "nothere"}),
+               std::runtime_error);
+}
+} // namespace

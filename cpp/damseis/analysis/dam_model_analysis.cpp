@@ -1,4 +1,5 @@
 #include "dam_model_analysis.h"
+#include "nonlinear_seismic.h"
 #include "run_outputs.h"
 #include <damseis/fem/group_loads.h>
 #include <damseis/fem/tied_dofs.h>
@@ -87,9 +88,16 @@ DamModel dam_model(MPI_Comm comm, const DamModelConfig& cfg)
 {
   results::set_stage("model");
   DamModel m;
+  // The dam's E is that of its concrete model (the factors of
+  // material.model, as in the gravity-dam demos).
   std::map<int, fem::Material> materials;
   for (const Region& r : cfg.regions)
-    materials[cfg.mesh->groups.at(r.group).tag] = r.material;
+  {
+    fem::Material mat = r.material;
+    if (r.dam)
+      mat.E = cfg.concrete.params.E;
+    materials[cfg.mesh->groups.at(r.group).tag] = mat;
+  }
   m.fe = std::make_unique<fem::ElasticModel>(cfg.mesh->model, cfg.order,
                                              materials, cfg.plane);
   std::vector<int> fixed;
@@ -145,15 +153,29 @@ std::unique_ptr<SeismicAnalysis>
 dam_model_seismic_analysis(DamModel& model, const DamModelConfig& cfg,
                            const RunFolder& folder)
 {
-  return linear_seismic_analysis(*model.fe, cfg.seismic, model.loads(cfg),
-                                 folder, model.tie.mat());
+  if (cfg.concrete.kind == ConcreteModelKind::linear)
+    return linear_seismic_analysis(*model.fe, cfg.seismic, model.loads(cfg),
+                                   folder, model.tie.mat());
+  ConcreteBulk bulk{cfg.concrete, {}, cfg.plane, cfg.seismic.dam_regions};
+  for (const Region& r : cfg.regions)
+  {
+    fem::Material mat = r.material;
+    if (r.dam)
+      mat.E = cfg.concrete.params.E;
+    bulk.elastic[cfg.mesh->groups.at(r.group).tag] = mat;
+  }
+  return concrete_seismic_analysis(*model.fe, cfg.seismic, bulk,
+                                   model.loads(cfg).static_loads, folder);
 }
 
 nlohmann::json dam_model_results(MPI_Comm comm, const DamModelConfig& cfg,
                                  const DamModel& model, nlohmann::json summary,
                                  const std::filesystem::path& out_dir)
 {
-  summary["analysis"] = "user mesh, linear elastic";
+  summary["analysis"] =
+      cfg.concrete.kind == ConcreteModelKind::linear
+          ? std::string("user mesh, linear elastic")
+          : "user mesh, HTC concrete (" + to_string(cfg.concrete.kind) + ")";
   summary["mesh_file"] = cfg.mesh_file.string();
   nlohmann::json regions = nlohmann::json::array();
   for (const Region& r : cfg.regions)

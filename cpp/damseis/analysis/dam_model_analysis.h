@@ -32,7 +32,8 @@ struct DamModel
 /// Builds the model of the configuration's mesh. Collective.
 DamModel dam_model(MPI_Comm comm, const DamModelConfig& cfg);
 
-/// The linear analysis of the model.
+/// The linear analysis of the model, or the HTC concrete one in the dam
+/// regions (material.model).
 std::unique_ptr<SeismicAnalysis>
 dam_model_seismic_analysis(DamModel& model, const DamModelConfig& cfg,
                            const RunFolder& folder);

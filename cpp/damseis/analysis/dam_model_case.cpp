@@ -50,17 +50,17 @@ void check_unique(const input::Case& c, const std::string& key,
 
 /// Refuses a name that cannot be part of a file or column name.
 void check_plain(const input::Case& c, const std::string& key,
-                 const std::vector<std::string>& names)
+                 const std::vector<std::string>& names, bool colon = false)
 {
   for (const auto& n : names)
   {
     const bool plain =
         !n.empty() &&
         std::all_of(n.begin(), n.end(),
-                    [](char ch)
+                    [&](char ch)
                     {
                       return std::isalnum(static_cast<unsigned char>(ch)) ||
-                             ch == '_' || ch == '-';
+                             ch == '_' || ch == '-' || (colon && ch == ':');
                     });
     if (!plain)
       c.fail(key, "has the name \"" + n + "\"",
@@ -320,8 +320,14 @@ input::Schema dam_model_schema()
 {
   input::Schema s;
   s.string("mesh.file", "", "-",
-           "gmsh mesh file (.msh) with physical groups: cells (triangles in "
-           "z = 0, or tetrahedra) and boundary facets");
+           "mesh file: gmsh .msh with physical groups (cells: triangles in "
+           "z = 0, or tetrahedra; boundary facets), or XDMF with cell and "
+           "facet tags (groups \"<dim>:<tag>\")");
+  s.string("mesh.xdmf_mesh", "mesh", "-", "XDMF: the mesh grid's name");
+  s.string("mesh.xdmf_cell_tags", "cell_tags", "-",
+           "XDMF: the cell tags grid's name");
+  s.string("mesh.xdmf_facet_tags", "facet_tags", "-",
+           "XDMF: the facet tags grid's name");
   s.integer("mesh.order", "2", "-", "displacement polynomial degree")
       .between(1, 2);
   s.string("mesh.plane", "plane_strain", "-", "2D idealisation",
@@ -381,6 +387,7 @@ input::Schema dam_model_schema()
   s.real_array("output.history_points", "[]", "m",
                "their coordinates (2 or 3 per point)");
   add_seismic_keys(s, dam_model_directions(), "[]", "[]");
+  add_concrete_keys(s);
   s.set_default("reservoir.level", "0");
   return s;
 }
@@ -518,6 +525,49 @@ read_history_points(const input::Case& c, int dim)
 }
 } // namespace
 
+/// material.model and the concrete of the dam regions: with HTC concrete
+/// the dam regions share E and nu (those of the concrete), and the loads
+/// and joints the concrete analysis does not take yet are refused.
+void read_dam_concrete(const input::Case& c, DamModelConfig& cfg)
+{
+  const Region* first = nullptr;
+  for (const Region& r : cfg.regions)
+  {
+    if (!r.dam)
+      continue;
+    if (first && (r.material.E != first->material.E ||
+                  r.material.nu != first->material.nu))
+    {
+      if (c.string("material.model") != "linear")
+        c.fail("regions.E",
+               "differs between the dam regions \"" + first->group +
+                   "\" and \"" + r.group + "\"",
+               "one concrete (E, nu) in the dam regions with material.model "
+               "= \"" +
+                   c.string("material.model") + "\"");
+    }
+    if (!first)
+      first = &r;
+  }
+  cfg.concrete =
+      read_concrete_settings(c, first->material.E, first->material.nu);
+  if (cfg.concrete.kind == ConcreteModelKind::linear)
+    return;
+  for (const auto& [key, given] :
+       {std::pair{"joints.side1", !cfg.joints.empty()},
+        std::pair{"loads.traction_groups", !cfg.tractions.empty()},
+        std::pair{"initial.velocity_groups", !cfg.initial_velocity.empty()},
+        std::pair{"output.history_names", !cfg.history_points.empty()}})
+  {
+    if (given)
+      c.fail(key,
+             "is not taken yet by the HTC concrete analysis (material.model "
+             "= \"" +
+                 c.string("material.model") + "\")",
+             "material.model = \"linear\", or no " + std::string(key));
+  }
+}
+
 DamModelConfig read_dam_model_config(const input::Case& c)
 {
   DamModelConfig cfg;
@@ -526,14 +576,17 @@ DamModelConfig read_dam_model_config(const input::Case& c)
     c.fail("mesh.file", "is empty", "a gmsh .msh file with physical groups");
   try
   {
-    cfg.mesh = std::make_shared<geometry::MeshFile>(
-        geometry::read_mesh_file(MPI_COMM_WORLD, cfg.mesh_file));
+    cfg.mesh = std::make_shared<geometry::MeshFile>(geometry::read_mesh_file(
+        MPI_COMM_WORLD, cfg.mesh_file,
+        {c.string("mesh.xdmf_mesh"), c.string("mesh.xdmf_cell_tags"),
+         c.string("mesh.xdmf_facet_tags")}));
   }
   catch (const std::runtime_error& e)
   {
     c.fail("mesh.file", e.what(),
            "a gmsh .msh file (format 2 or 4) of linear triangles or "
-           "tetrahedra in physical groups");
+           "tetrahedra in physical groups, or an XDMF mesh with cell and "
+           "facet tags (mesh.xdmf_*)");
   }
   const geometry::MeshFile& mesh = *cfg.mesh;
   cfg.dim = mesh.tdim;
@@ -555,7 +608,7 @@ DamModelConfig read_dam_model_config(const input::Case& c)
   cfg.joint_tolerance = 0.0;
   cfg.joints = read_joints(c, mesh, cfg.joint_tolerance);
   cfg.faces = facet_groups(c, mesh, "output.faces");
-  check_plain(c, "output.faces", cfg.faces);
+  check_plain(c, "output.faces", cfg.faces, true); // XDMF groups "d:v"
   check_unique(c, "output.faces", cfg.faces);
   cfg.tractions = group_vectors(c, mesh, "loads.traction_groups",
                                 "loads.traction", mesh.tdim - 1);
@@ -633,6 +686,7 @@ DamModelConfig read_dam_model_config(const input::Case& c)
     c.fail("motion.z.record", "is given for a 2D mesh",
            "motion.x (horizontal) and motion.y (vertical) in 2D");
   cfg.seismic.dam_regions.assign(dam_tags.begin(), dam_tags.end());
+  read_dam_concrete(c, cfg);
   // The reservoir: its bottom is the lowest wetted point; a level given
   // must be above it (levels are elevations in the mesh's coordinates).
   auto& reservoir = cfg.seismic.reservoir;

@@ -5,6 +5,7 @@
 // velocity), histories at named points, and the shared seismic keys.
 #pragma once
 
+#include "concrete_settings.h"
 #include "seismic_settings.h"
 #include <array>
 #include <damseis/fem/elastic_model.h>
@@ -65,6 +66,9 @@ struct DamModelConfig
   /// recorded (histories.csv).
   std::vector<std::pair<std::string, std::array<double, 3>>> history_points;
   SeismicSettings seismic;
+  /// material.model and the concrete of the dam regions (linear: the
+  /// linear analysis).
+  ConcreteSettings concrete;
 };
 
 /// Ground-motion components along the mesh axes x, y and z (the last axis

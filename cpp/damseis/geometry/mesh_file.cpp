@@ -1,7 +1,14 @@
 #include "mesh_file.h"
 #include "gmsh_session.h"
 #include "root_status.h"
+#include <algorithm>
+#include <dolfinx/fem/CoordinateElement.h>
+#include <dolfinx/io/XDMFFile.h>
+#include <dolfinx/mesh/Mesh.h>
+#include <dolfinx/mesh/MeshTags.h>
 #include <gmsh.h>
+#include <numeric>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -69,8 +76,94 @@ open_file(const std::filesystem::path& file)
 
 } // namespace
 
-MeshFile read_mesh_file(MPI_Comm comm, const std::filesystem::path& file)
+namespace
 {
+/// The groups of a tag array: one per value found on any rank.
+void add_groups(MPI_Comm comm, const dolfinx::mesh::MeshTags<std::int32_t>& t,
+                std::map<std::string, PhysicalGroup>& groups)
+{
+  std::set<std::int32_t> local(t.values().begin(), t.values().end());
+  std::vector<std::int32_t> mine(local.begin(), local.end());
+  int size = 0;
+  MPI_Comm_size(comm, &size);
+  int n = static_cast<int>(mine.size());
+  std::vector<int> counts(size), offsets(size + 1, 0);
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
+  std::partial_sum(counts.begin(), counts.end(), offsets.begin() + 1);
+  std::vector<std::int32_t> all(offsets.back());
+  MPI_Allgatherv(mine.data(), n, MPI_INT32_T, all.data(), counts.data(),
+                 offsets.data(), MPI_INT32_T, comm);
+  for (std::int32_t v : all)
+    groups[std::to_string(t.dim()) + ":" + std::to_string(v)] = {t.dim(), v};
+}
+
+/// An XDMF mesh with its tags, read in parallel.
+MeshFile read_xdmf(MPI_Comm comm, const std::filesystem::path& file,
+                   const XdmfGrids& grids)
+{
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec))
+    throw std::runtime_error(file.string() + ": no such mesh file");
+  MeshFile out;
+  std::string problem;
+  try
+  {
+    dolfinx::io::XDMFFile xdmf(comm, file, "r");
+    const auto [type, degree] = xdmf.read_cell_type(grids.mesh);
+    if (degree != 1 || (type != dolfinx::mesh::CellType::triangle &&
+                        type != dolfinx::mesh::CellType::tetrahedron))
+      throw std::runtime_error("the mesh is not of linear triangles or "
+                               "tetrahedra");
+    const dolfinx::fem::CoordinateElement element(type, 1);
+    auto mesh = std::make_shared<dolfinx::mesh::Mesh>(xdmf.read_mesh(
+        element, dolfinx::mesh::GhostMode::shared_facet, grids.mesh));
+    out.tdim = mesh->topology().dim();
+    if (mesh->geometry().dim() != out.tdim)
+      throw std::runtime_error(
+          "a mesh of triangles needs 2 coordinates per node (z = 0 dropped)");
+    mesh->topology_mutable().create_entities(out.tdim - 1);
+    mesh->topology_mutable().create_connectivity(out.tdim - 1, out.tdim);
+    out.model.mesh = mesh;
+    out.model.cell_tags =
+        std::make_shared<dolfinx::mesh::MeshTags<std::int32_t>>(
+            xdmf.read_meshtags(mesh, grids.cell_tags));
+    out.model.facet_tags =
+        std::make_shared<dolfinx::mesh::MeshTags<std::int32_t>>(
+            xdmf.read_meshtags(mesh, grids.facet_tags));
+    if (out.model.cell_tags->dim() != out.tdim ||
+        out.model.facet_tags->dim() != out.tdim - 1)
+      throw std::runtime_error("the grids \"" + grids.cell_tags + "\" and \"" +
+                               grids.facet_tags +
+                               "\" must tag cells and facets");
+  }
+  catch (const std::exception& e)
+  {
+    problem = e.what();
+  }
+  // The same outcome on every rank.
+  int ok = problem.empty() ? 1 : 0;
+  MPI_Allreduce(MPI_IN_PLACE, &ok, 1, MPI_INT, MPI_MIN, comm);
+  if (!ok)
+    throw std::runtime_error(
+        file.string() + ": cannot read it as an XDMF mesh with grids \"" +
+        grids.mesh + "\", \"" + grids.cell_tags + "\", \"" + grids.facet_tags +
+        "\"" +
+        (problem.empty() ? std::string()
+                         : " (" + problem.substr(0, 160) + ")"));
+  add_groups(comm, *out.model.cell_tags, out.groups);
+  add_groups(comm, *out.model.facet_tags, out.groups);
+  return out;
+}
+} // namespace
+
+MeshFile read_mesh_file(MPI_Comm comm, const std::filesystem::path& file,
+                        const XdmfGrids& grids)
+{
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  if (ext == ".xdmf")
+    return read_xdmf(comm, file, grids);
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   MeshFile out;

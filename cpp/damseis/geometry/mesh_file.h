@@ -28,10 +28,24 @@ struct MeshFile
   std::map<std::string, PhysicalGroup> groups;
 };
 
-/// Reads a gmsh mesh file (.msh, format 2 or 4) on rank 0 and distributes
-/// it (model_from_gmsh): the topological dimension is the highest one with
-/// a physical group. Collective. Throws std::runtime_error, the same on
-/// every rank, for a missing or unreadable file, no physical groups, or
-/// elements the model does not take (see model_from_gmsh).
-MeshFile read_mesh_file(MPI_Comm comm, const std::filesystem::path& file);
+/// The grids of an XDMF mesh file: the mesh and its cell and facet tags.
+struct XdmfGrids
+{
+  std::string mesh = "mesh";
+  std::string cell_tags = "cell_tags";
+  std::string facet_tags = "facet_tags";
+};
+
+/// Reads a mesh file and distributes it. Collective. Throws
+/// std::runtime_error, the same on every rank, for a missing or unreadable
+/// file, no groups, or elements the model does not take.
+///  - gmsh (.msh, format 2 or 4), read on rank 0 (model_from_gmsh): the
+///    topological dimension is the highest one with a physical group;
+///    groups by their names.
+///  - XDMF (.xdmf, as DOLFINx writes it), read in parallel: linear
+///    triangles with 2 coordinates or tetrahedra, the cell and facet tags
+///    in the grids `grids` names; a tag value v is the group "<dim>:<v>"
+///    (the name gmsh gives an unnamed group).
+MeshFile read_mesh_file(MPI_Comm comm, const std::filesystem::path& file,
+                        const XdmfGrids& grids = {});
 } // namespace damseis::geometry
