@@ -109,7 +109,8 @@ std::optional<CheckpointData> read_checkpoint(MPI_Comm comm,
   case checkpoint::RankFile::mismatch:
     throw input::InputError(
         "the checkpoint in " + dir.string() +
-        " does not match this run (the mesh, the partition or a case value "
+        " does not match this run (the mesh, the partition, the output points "
+        "(crest, base, history) or a case value "
         "other than run.*, output.* and solver.* changed) or is damaged; "
         "restart with the case it was written with, or remove it to start "
         "over");

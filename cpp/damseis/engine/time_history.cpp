@@ -2,6 +2,7 @@
 #include <chrono>
 #include <damseis/results/progress.h>
 #include <dolfinx/la/petsc.h>
+#include <stdexcept>
 
 namespace damseis::engine
 {
@@ -48,7 +49,18 @@ void TimeHistory::write_checkpoint(int k) const
   data.step = k;
   _stepper.save(data.arrays);
   for (const Observer* o : _observers)
-    o->save(data.arrays);
+  {
+    // Each part's arrays by their own names: a name used twice would
+    // overwrite another part's state.
+    Arrays arrays;
+    o->save(arrays);
+    for (auto& [name, values] : arrays)
+    {
+      if (!data.arrays.emplace(name, std::move(values)).second)
+        throw std::logic_error("checkpoint array \"" + name +
+                               "\" saved by two parts");
+    }
+  }
   engine::write_checkpoint(_comm, _s.checkpoint_dir, data, _s.fingerprint);
 }
 
