@@ -24,7 +24,12 @@
 #  5. HTC viscoplastic concrete (P1, 4 m, Gf = 2000 N/m, 2 s): dam_model on
 #     the exported section equals the koyna demo (crest history and stress,
 #     kappa_t and strain-rate extremes: 1e-6, the Newton tolerance;
-#     measured 3e-13, the same Newton iterations).
+#     measured 3e-13, the same Newton iterations);
+#  6. HTC concrete with a tied joint (the Newton iteration on the tied
+#     unknowns, P1, 0.6 g, ft 1 MPa, cracking at the base): plastic, equal
+#     to the merged mesh (1e-6; measured 5e-13); elastic, equal to the
+#     linear analysis with the tie (1e-9; measured 6e-13); plastic on 2
+#     ranks equal to serial (1e-6; measured 5e-13).
 # Usage: dam_model_checks.sh BIN_DIR MPIEXEC PYTHON SOURCE_DIR
 set -eu
 bin=$1 mpiexec=$2 python=$3 src=$4
@@ -68,6 +73,21 @@ vp=(--set material.model=viscoplastic --set mesh.order=1 --set time.duration=2
 "$dm" --case "$section" --out "$work/section_vp" "${quiet[@]}" "${vp[@]}" \
   --set mesh.file="$work/koyna_vp/model.msh" --set 'output.history_names=[]' \
   --set 'output.history_points=[]' >/dev/null
+# 6. Concrete with the tied joint.
+tj=(--set mesh.order=1 --set time.duration=1 --set motion.y.peak_g=0.6
+    --set concrete.ft=1.0e6 --set 'output.history_names=[]'
+    --set 'output.history_points=[]')
+for m in linear elastic plastic; do
+  "$dm" --case "$block" --out "$work/tied_$m" "${quiet[@]}" "${tj[@]}" \
+    --set material.model=$m >/dev/null
+done
+"$dm" --case "$block" --out "$work/merged_plastic" "${quiet[@]}" "${tj[@]}" \
+  --set material.model=plastic --set mesh.file=meshes/block_jointless.msh \
+  --set 'joints.side1=[]' --set 'joints.side2=[]' >/dev/null
+OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
+  OMPI_MCA_rmaps_base_oversubscribe=1 "$mpiexec" -n 2 "$dm" --case "$block" \
+  --out "$work/tied_plastic_2" "${quiet[@]}" "${tj[@]}" \
+  --set material.model=plastic >/dev/null
 # 4. Two ranks.
 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
   OMPI_MCA_rmaps_base_oversubscribe=1 "$mpiexec" -n 2 "$dm" --case "$block" \
@@ -123,6 +143,10 @@ ok = ok and falls
 print(f"{'ok  ' if falls else 'FAIL'} initial velocity error falls with dt")
 check("2 ranks crest history", history_diff("tied", "tied_2"), 1e-8)
 check("viscoplastic crest history", history_diff("koyna_vp", "section_vp"), 1e-6)
+check("tied joint, plastic vs merged", history_diff("tied_plastic", "merged_plastic"), 1e-6)
+check("tied joint, elastic concrete vs linear", history_diff("tied_linear", "tied_elastic"), 1e-9)
+check("tied joint, plastic, 2 ranks", history_diff("tied_plastic", "tied_plastic_2"), 1e-6)
+ok = ok and summary("tied_plastic")["newton"]["max_inelastic_points"] > 0
 for k in ("max_principal_tension_mpa", "max_principal_compression_mpa",
           "max_kappa_t", "max_strain_rate_per_s"):
     a, b = summary("koyna_vp")[k]["value"], summary("section_vp")[k]["value"]

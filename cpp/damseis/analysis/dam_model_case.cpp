@@ -554,8 +554,7 @@ void read_dam_concrete(const input::Case& c, DamModelConfig& cfg)
   if (cfg.concrete.kind == ConcreteModelKind::linear)
     return;
   for (const auto& [key, given] :
-       {std::pair{"joints.side1", !cfg.joints.empty()},
-        std::pair{"loads.traction_groups", !cfg.tractions.empty()},
+       {std::pair{"loads.traction_groups", !cfg.tractions.empty()},
         std::pair{"initial.velocity_groups", !cfg.initial_velocity.empty()},
         std::pair{"output.history_names", !cfg.history_points.empty()}})
   {

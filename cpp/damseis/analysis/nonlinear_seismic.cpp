@@ -7,10 +7,12 @@
 #include "recorders.h"
 #include "run_outputs.h"
 #include "static_stage.h"
+#include "tied_concrete_system.h"
 #include <chrono>
 #include <cmath>
 #include <damseis/engine/time_history.h>
 #include <damseis/fem/concrete_model.h>
+#include <damseis/fem/tied_dofs.h>
 #include <damseis/geometry/tags.h>
 #include <damseis/linalg/petsc_vectors.h>
 #include <damseis/results/displacement_envelope.h>
@@ -347,7 +349,7 @@ public:
   ConcreteSeismicAnalysis(fem::ElasticModel& fe, const SeismicSettings& s,
                           ConcreteBulk bulk,
                           const std::vector<Vec>& extra_static_loads,
-                          RunFolder folder);
+                          RunFolder folder, Mat tie);
   void modal_stage() override;
   void static_stage() override;
   void time_history() override;
@@ -356,6 +358,8 @@ public:
 private:
   void add_recorders(engine::TimeHistory& history);
   void write_concrete_outputs(json& summary) const;
+  /// The load on the system's unknowns of a full-space load.
+  Vector system_load(Vec f) const;
 
   fem::ElasticModel& _fe;
   const SeismicSettings& _s;
@@ -369,11 +373,17 @@ private:
   bool _plastic = false;
   Matrix _K{nullptr, false}, _M{nullptr, false};
   fem::ConcreteModel _cm;
-  ConcreteSystem _system;
+  /// Bonded joints: u = P u_r (null: none), and the full stiffness.
+  Mat _tie;
+  Matrix _K_full{nullptr, false};
+  /// The concrete system (on the tied unknowns with ties).
+  std::unique_ptr<ConcreteSystem> _system;
   /// Dead weight alone, and all static loads.
   Vector _F_g{nullptr, false}, _F_static{nullptr, false};
   /// The static solution and its internal force and stresses.
   Vector _u_static{nullptr, false}, _f_int_static{nullptr, false};
+  /// The static displacement of all dofs (= _u_static without ties).
+  Vector _u_static_full{nullptr, false};
   std::vector<double> _sig_static;
   std::optional<ModalResult> _modal;
   StaticStageReport _static_report;
@@ -397,10 +407,10 @@ private:
 
 ConcreteSeismicAnalysis::ConcreteSeismicAnalysis(
     fem::ElasticModel& fe, const SeismicSettings& s, ConcreteBulk bulk,
-    const std::vector<Vec>& extra_static_loads, RunFolder folder)
+    const std::vector<Vec>& extra_static_loads, RunFolder folder, Mat tie)
     : _fe(fe), _s(s), _bulk(std::move(bulk)), _folder(std::move(folder)),
       _comm(fe.mesh()->comm()),
-      _cm(fe, concrete_regions(_bulk), _bulk.elastic, _bulk.plane), _system(_cm)
+      _cm(fe, concrete_regions(_bulk), _bulk.elastic, _bulk.plane), _tie(tie)
 {
   results::set_stage("assembly");
   const ConcreteSettings& concrete = _bulk.concrete;
@@ -409,6 +419,16 @@ ConcreteSeismicAnalysis::ConcreteSeismicAnalysis(
   _added = s.westergaard && wet ? &s.reservoir : nullptr;
   _K = Matrix(fe.assemble_stiffness(), false);
   _M = Matrix(fe.assemble_mass(_added), false);
+  if (tie)
+  {
+    // The system on the tied unknowns: P^T K P, P^T M P, P^T F.
+    _K_full = std::move(_K);
+    _K = Matrix(fem::reduce_to_tied(_K_full.mat(), tie), false);
+    _M = Matrix(fem::reduce_to_tied(_M.mat(), tie), false);
+    _system = std::make_unique<TiedConcreteSystem>(_cm, tie, _K_full.mat());
+  }
+  else
+    _system = std::make_unique<ConcreteSystem>(_cm);
   _plastic = concrete.kind != ConcreteModelKind::elastic;
   _cm.set_implex(concrete.implex && _plastic);
   if (_plastic)
@@ -417,16 +437,29 @@ ConcreteSeismicAnalysis::ConcreteSeismicAnalysis(
   // The static loads: dead weight, then the reservoir (and silt, uplift).
   std::array<double, 3> g = {0, 0, 0};
   g[fe.dim() - 1] = -s.gravity;
-  _F_g = Vector(fe.assemble_gravity(g), false);
-  _F_static = linalg::column_vector(_K.mat());
-  VecCopy(_F_g.vec(), _F_static.vec());
+  Vector F_g(fe.assemble_gravity(g), false);
+  Vector F_static =
+      linalg::row_vector(_K_full.mat() ? _K_full.mat() : _K.mat());
+  VecCopy(F_g.vec(), F_static.vec());
   if (wet)
   {
     Vector H(fe.assemble_hydrostatic(s.reservoir), false);
-    VecAXPY(_F_static.vec(), 1.0, H.vec());
+    VecAXPY(F_static.vec(), 1.0, H.vec());
   }
   for (Vec extra : extra_static_loads)
-    VecAXPY(_F_static.vec(), 1.0, extra);
+    VecAXPY(F_static.vec(), 1.0, extra);
+  _F_g = system_load(F_g.vec());
+  _F_static = system_load(F_static.vec());
+}
+
+Vector ConcreteSeismicAnalysis::system_load(Vec f) const
+{
+  Vector y = linalg::column_vector(_K.mat());
+  if (_tie)
+    MatMultTranspose(_tie, f, y.vec());
+  else
+    VecCopy(f, y.vec());
+  return y;
 }
 
 void ConcreteSeismicAnalysis::modal_stage()
@@ -435,7 +468,11 @@ void ConcreteSeismicAnalysis::modal_stage()
   results::set_stage("modal analysis");
   Matrix M0(nullptr, false);
   if (_added)
+  {
     M0 = Matrix(_fe.assemble_mass(nullptr), false);
+    if (_tie)
+      M0 = Matrix(fem::reduce_to_tied(M0.mat(), _tie), false);
+  }
   _modal =
       modal_and_damping(_K.mat(), _M.mat(), _added ? M0.mat() : nullptr, _s);
 }
@@ -456,16 +493,21 @@ void ConcreteSeismicAnalysis::static_stage()
   stage.factorization = _s.factorization;
   stage.f1_hz = _modal->f1;
   stage.f2_hz = _modal->f2;
-  _static_report = solve_static_stage(_system, _K.mat(), _M.mat(), _F_g.vec(),
+  _static_report = solve_static_stage(*_system, _K.mat(), _M.mat(), _F_g.vec(),
                                       _F_static.vec(), _u_static.vec(), stage);
   _sig_static.assign(_cm.stress().begin(), _cm.stress().end());
   _f_int_static = linalg::column_vector(_K.mat());
-  _system.internal_force(_f_int_static.vec());
+  _system->internal_force(_f_int_static.vec());
+  _u_static_full = linalg::row_vector(_tie ? _tie : _K.mat());
+  if (_tie)
+    MatMult(_tie, _u_static.vec(), _u_static_full.vec());
+  else
+    VecCopy(_u_static.vec(), _u_static_full.vec());
   _static_seconds = seconds_since(_wall_start) - _modal->seconds;
   results::print(_comm,
                  "static stage: " + std::to_string(_static_report.iterations) +
                      " Newton iterations, " +
-                     std::to_string(_system.accepted.inelastic) +
+                     std::to_string(_system->accepted.inelastic) +
                      " inelastic points");
 }
 
@@ -479,17 +521,26 @@ void ConcreteSeismicAnalysis::time_history()
   _newton.extrapolated_predictor =
       concrete.newton.extrapolated_predictor && !concrete.implex && _plastic;
   _stepper = std::make_unique<ConcreteStepper>(
-      _M.mat(), _K.mat(), _modal->damping, _s.scheme, _system, _cm, _newton,
+      _M.mat(), _K.mat(), _modal->damping, _s.scheme, *_system, _cm, _newton,
       _s.factorization, _u_static.vec(), _f_int_static.vec());
-  const GroundMotionLoad ground(_fe, _s, _M.mat(), nullptr, _F_static.vec());
+  const GroundMotionLoad ground(_fe, _s, _M.mat(), _tie, _F_static.vec());
 
   std::filesystem::create_directories(_folder.dir);
   int rank = 0;
   MPI_Comm_rank(_comm, &rank);
   if (rank == 0)
     std::ofstream(_folder.dir / "case_used.toml") << _folder.case_text;
+  Vector mode_full = linalg::row_vector(_tie ? _tie : _K.mat());
   write_modes(
-      _fe, _modal->modes, [](Vec x) { return x; }, _folder.dir / "modes.xdmf");
+      _fe, _modal->modes,
+      [&](Vec x)
+      {
+        if (!_tie)
+          return x;
+        MatMult(_tie, x, mode_full.vec());
+        return mode_full.vec();
+      },
+      _folder.dir / "modes.xdmf");
 
   engine::TimeHistory history(
       _comm, time_history_settings(_s, _fe, _folder.dir, _folder.case_text),
@@ -513,7 +564,7 @@ void ConcreteSeismicAnalysis::add_recorders(engine::TimeHistory& history)
         _in_dam[d] = 1;
     }
   }
-  _u = std::make_unique<FullDisplacement>(*_stepper, nullptr);
+  _u = std::make_unique<FullDisplacement>(*_stepper, _tie);
   // The stresses (seismic: less the static ones, unless total asked).
   _s_field.resize(_cm.stress().size());
   _stresses = std::make_unique<StressRecorder>(
@@ -535,10 +586,10 @@ void ConcreteSeismicAnalysis::add_recorders(engine::TimeHistory& history)
                                              _s.base_point, _s.steps, *_u);
   // Envelope of the seismic horizontal displacement along the upstream
   // face.
-  _base_static = _points->base().value_on_all(_u_static.vec());
+  _base_static = _points->base().value_on_all(_u_static_full.vec());
   _face_u = std::make_unique<FaceDisplacementRecorder>(
       *_fe.V(), *model.facet_tags, tags::upstream_face, _points->base(), *_u,
-      _u_static.vec(), _base_static[0]);
+      _u_static_full.vec(), _base_static[0]);
   _fields = std::make_unique<FieldRecorder>(
       _fe, _folder.dir, _s.output_every, [this] { return _u->vec(); },
       *_stresses,
@@ -560,7 +611,7 @@ json ConcreteSeismicAnalysis::results()
   const int dim = _fe.dim();
   const std::filesystem::path& dir = _folder.dir;
   const std::vector<double>& hist = _points->reduce(_comm);
-  const auto crest_static = _points->crest().value_on_all(_u_static.vec());
+  const auto crest_static = _points->crest().value_on_all(_u_static_full.vec());
   const json crest_summary =
       write_crest_history(_comm, hist, dim, _s.steps, _s.scheme.dt,
                           crest_static, _base_static, true, dir / "crest.csv");
@@ -646,11 +697,13 @@ void ConcreteSeismicAnalysis::write_concrete_outputs(json& summary) const
 }
 } // namespace
 
-std::unique_ptr<SeismicAnalysis> concrete_seismic_analysis(
-    fem::ElasticModel& fe, const SeismicSettings& s, const ConcreteBulk& bulk,
-    const std::vector<Vec>& extra_static_loads, const RunFolder& folder)
+std::unique_ptr<SeismicAnalysis>
+concrete_seismic_analysis(fem::ElasticModel& fe, const SeismicSettings& s,
+                          const ConcreteBulk& bulk,
+                          const std::vector<Vec>& extra_static_loads,
+                          const RunFolder& folder, Mat tie)
 {
-  return std::make_unique<ConcreteSeismicAnalysis>(fe, s, bulk,
-                                                   extra_static_loads, folder);
+  return std::make_unique<ConcreteSeismicAnalysis>(
+      fe, s, bulk, extra_static_loads, folder, tie);
 }
 } // namespace damseis::analysis

@@ -34,7 +34,9 @@ struct ConcreteBulk
 /// plus dam_points.csv (per dam quadrature point: envelopes, equivalent
 /// viscoplastic strains, maximum strain rates). `extra_static_loads`
 /// (full-space vectors, zero at fixed dofs) are applied with the reservoir
-/// in the static stage (silt, uplift). Checkpoints and signals as in
+/// in the static stage (silt, uplift). `tie` (optional) ties bonded joints,
+/// u = P u_r, as in run_linear_seismic: the Newton iteration runs on the
+/// tied unknowns (TiedConcreteSystem). Checkpoints and signals as in
 /// run_linear_seismic. Collective.
 ///
 /// Throws dynamics::StepFailure if a step cannot be solved (the outputs
@@ -42,17 +44,17 @@ struct ConcreteBulk
 std::unique_ptr<SeismicAnalysis> concrete_seismic_analysis(
     fem::ElasticModel& fe, const SeismicSettings& settings,
     const ConcreteBulk& bulk, const std::vector<Vec>& extra_static_loads,
-    const RunFolder& folder);
+    const RunFolder& folder, Mat tie = nullptr);
 
 /// All phases of that analysis; returns the summary.
 inline nlohmann::json
 run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& settings,
                       const ConcreteBulk& bulk,
                       const std::vector<Vec>& extra_static_loads,
-                      const RunFolder& folder)
+                      const RunFolder& folder, Mat tie = nullptr)
 {
   return concrete_seismic_analysis(fe, settings, bulk, extra_static_loads,
-                                   folder)
+                                   folder, tie)
       ->run();
 }
 } // namespace damseis::analysis
