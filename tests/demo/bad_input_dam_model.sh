@@ -33,7 +33,6 @@ expect dm_history_file 'loads\.traction_history: .*nofile\.txt' --set 'loads.tra
 expect dm_region_twice 'regions\.groups: lists "dam" twice' --set 'regions.groups=[dam, dam]' --set 'regions.E=[1e9, 1e9]' --set 'regions.nu=[0.2, 0.2]' --set 'regions.rho=[1, 1]'
 expect dm_history_name_twice 'output\.history_names: lists "a" twice' --set 'output.history_names=[a, a]' --set 'output.history_points=[0, 100, 0, 100]'
 expect dm_interior_traction 'loads\.traction_groups: names "joint_left", which has .* facets inside the model' --case "$block" --set mesh.file=meshes/block_jointless.msh --set 'joints.side1=[]' --set 'joints.side2=[]' --set 'loads.traction_groups=[joint_left]' --set 'loads.traction=[0, 0, -1e5]'
-expect dm_concrete_with_tractions 'loads\.traction_groups: is not taken yet by the HTC concrete analysis' --set material.model=plastic --set 'loads.traction_groups=[crest]' --set 'loads.traction=[0, -1e5]' --set 'output.history_names=[]' --set 'output.history_points=[]' 
 expect dm_concrete_zones 'regions\.E: differs between the dam regions' --case "$block" --set material.model=plastic --set 'regions.E=[24e9, 20e9]'
 
 if [ "$failures" -ne 0 ]; then

@@ -526,8 +526,7 @@ read_history_points(const input::Case& c, int dim)
 } // namespace
 
 /// material.model and the concrete of the dam regions: with HTC concrete
-/// the dam regions share E and nu (those of the concrete), and the loads
-/// and joints the concrete analysis does not take yet are refused.
+/// the dam regions share E and nu (those of the concrete).
 void read_dam_concrete(const input::Case& c, DamModelConfig& cfg)
 {
   const Region* first = nullptr;
@@ -551,20 +550,6 @@ void read_dam_concrete(const input::Case& c, DamModelConfig& cfg)
   }
   cfg.concrete =
       read_concrete_settings(c, first->material.E, first->material.nu);
-  if (cfg.concrete.kind == ConcreteModelKind::linear)
-    return;
-  for (const auto& [key, given] :
-       {std::pair{"loads.traction_groups", !cfg.tractions.empty()},
-        std::pair{"initial.velocity_groups", !cfg.initial_velocity.empty()},
-        std::pair{"output.history_names", !cfg.history_points.empty()}})
-  {
-    if (given)
-      c.fail(key,
-             "is not taken yet by the HTC concrete analysis (material.model "
-             "= \"" +
-                 c.string("material.model") + "\")",
-             "material.model = \"linear\", or no " + std::string(key));
-  }
 }
 
 DamModelConfig read_dam_model_config(const input::Case& c)

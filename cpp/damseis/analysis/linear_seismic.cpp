@@ -1,6 +1,7 @@
 #include "linear_seismic.h"
 #include "engine_settings.h"
 #include "ground_motion_load.h"
+#include "initial_motion.h"
 #include "modal_stage.h"
 #include "recorders.h"
 #include "run_outputs.h"
@@ -194,53 +195,12 @@ engine::InitialState LinearSeismicAnalysis::initial_state()
 {
   if (!_loads.initial_velocity)
     return {};
-  // v0 on the system's unknowns, and a0 with M a0 = f(0) - C v0 where M
-  // has mass: a0 = a_ground(0) - M^-1 C v0, C = a_M M + b_K K. Rows
-  // without mass (fixed dofs, massless regions) keep the ground's a0.
   const GroundMotionLoad ground(_fe, _s, _M.mat(), _tie);
-  if (_tie)
-    _v0 = Vector(fem::restrict_to_tied(_tie, _loads.initial_velocity), false);
-  else
-  {
-    _v0 = linalg::column_vector(_K.mat());
-    VecCopy(_loads.initial_velocity, _v0.vec());
-  }
-  _a0 = linalg::column_vector(_K.mat());
-  ground.initial_acceleration(_a0.vec());
-  Vector r = linalg::column_vector(_K.mat()),
-         Kv = linalg::column_vector(_K.mat());
-  MatMult(_M.mat(), _v0.vec(), r.vec());
-  MatMult(_K.mat(), _v0.vec(), Kv.vec());
-  VecAXPBY(r.vec(), -_modal->damping.b_stiffness, -_modal->damping.a_mass,
-           Kv.vec());
-  // M with 1 on the diagonal of the rows without mass, and r = 0 there.
-  Mat Mr;
-  MatDuplicate(_M.mat(), MAT_COPY_VALUES, &Mr);
-  Vector d = linalg::column_vector(_K.mat());
-  MatGetDiagonal(Mr, d.vec());
-  double* dd = nullptr;
-  double* rr = nullptr;
-  PetscInt n = 0;
-  VecGetLocalSize(d.vec(), &n);
-  VecGetArray(d.vec(), &dd);
-  VecGetArray(r.vec(), &rr);
-  for (PetscInt i = 0; i < n; ++i)
-  {
-    if (dd[i] == 0.0)
-    {
-      dd[i] = 1.0;
-      rr[i] = 0.0;
-    }
-  }
-  VecRestoreArray(r.vec(), &rr);
-  VecRestoreArray(d.vec(), &dd);
-  MatDiagonalSet(Mr, d.vec(), INSERT_VALUES);
-  Matrix M_reg(Mr, false);
-  linalg::DirectSolver solver(_comm, _s.factorization);
-  solver.factorize(M_reg.mat());
-  Vector da = linalg::column_vector(_K.mat());
-  solver.solve(r.vec(), da.vec());
-  VecAXPY(_a0.vec(), 1.0, da.vec());
+  InitialMotion m =
+      initial_motion(_comm, _M.mat(), _K.mat(), _modal->damping, ground,
+                     _loads.initial_velocity, _tie, _s.factorization);
+  _v0 = std::move(m.v0);
+  _a0 = std::move(m.a0);
   return {nullptr, _v0.vec(), _a0.vec()};
 }
 

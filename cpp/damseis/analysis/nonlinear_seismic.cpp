@@ -3,11 +3,13 @@
 #include "concrete_system.h"
 #include "engine_settings.h"
 #include "ground_motion_load.h"
+#include "initial_motion.h"
 #include "modal_stage.h"
 #include "recorders.h"
 #include "run_outputs.h"
 #include "static_stage.h"
 #include "tied_concrete_system.h"
+#include "timed_loads.h"
 #include <chrono>
 #include <cmath>
 #include <damseis/engine/time_history.h>
@@ -347,8 +349,7 @@ class ConcreteSeismicAnalysis : public SeismicAnalysis
 {
 public:
   ConcreteSeismicAnalysis(fem::ElasticModel& fe, const SeismicSettings& s,
-                          ConcreteBulk bulk,
-                          const std::vector<Vec>& extra_static_loads,
+                          ConcreteBulk bulk, const ModelLoads& loads,
                           RunFolder folder, Mat tie);
   void modal_stage() override;
   void static_stage() override;
@@ -364,6 +365,7 @@ private:
   fem::ElasticModel& _fe;
   const SeismicSettings& _s;
   const ConcreteBulk _bulk;
+  const ModelLoads _loads;
   RunFolder _folder;
   MPI_Comm _comm;
   const Clock::time_point _wall_start = Clock::now();
@@ -398,6 +400,8 @@ private:
   std::unique_ptr<PointHistories> _points;
   std::unique_ptr<FaceDisplacementRecorder> _face_u;
   std::unique_ptr<FieldRecorder> _fields;
+  std::unique_ptr<PointStates> _point_states;
+  InitialMotion _initial;
   std::vector<double> _s_field;
   std::vector<std::int8_t> _in_dam;
   std::vector<std::vector<std::int32_t>> _face_points;
@@ -405,11 +409,13 @@ private:
   engine::TimeHistoryReport _run;
 };
 
-ConcreteSeismicAnalysis::ConcreteSeismicAnalysis(
-    fem::ElasticModel& fe, const SeismicSettings& s, ConcreteBulk bulk,
-    const std::vector<Vec>& extra_static_loads, RunFolder folder, Mat tie)
-    : _fe(fe), _s(s), _bulk(std::move(bulk)), _folder(std::move(folder)),
-      _comm(fe.mesh()->comm()),
+ConcreteSeismicAnalysis::ConcreteSeismicAnalysis(fem::ElasticModel& fe,
+                                                 const SeismicSettings& s,
+                                                 ConcreteBulk bulk,
+                                                 const ModelLoads& loads,
+                                                 RunFolder folder, Mat tie)
+    : _fe(fe), _s(s), _bulk(std::move(bulk)), _loads(loads),
+      _folder(std::move(folder)), _comm(fe.mesh()->comm()),
       _cm(fe, concrete_regions(_bulk), _bulk.elastic, _bulk.plane), _tie(tie)
 {
   results::set_stage("assembly");
@@ -446,7 +452,7 @@ ConcreteSeismicAnalysis::ConcreteSeismicAnalysis(
     Vector H(fe.assemble_hydrostatic(s.reservoir), false);
     VecAXPY(F_static.vec(), 1.0, H.vec());
   }
-  for (Vec extra : extra_static_loads)
+  for (Vec extra : loads.static_loads)
     VecAXPY(F_static.vec(), 1.0, extra);
   _F_g = system_load(F_g.vec());
   _F_static = system_load(F_static.vec());
@@ -524,6 +530,8 @@ void ConcreteSeismicAnalysis::time_history()
       _M.mat(), _K.mat(), _modal->damping, _s.scheme, *_system, _cm, _newton,
       _s.factorization, _u_static.vec(), _f_int_static.vec());
   const GroundMotionLoad ground(_fe, _s, _M.mat(), _tie, _F_static.vec());
+  // Tractions with their histories on top of the ground motion's load.
+  const LoadWithTimedTerms load(ground, _loads.timed, _tie);
 
   std::filesystem::create_directories(_folder.dir);
   int rank = 0;
@@ -544,9 +552,18 @@ void ConcreteSeismicAnalysis::time_history()
 
   engine::TimeHistory history(
       _comm, time_history_settings(_s, _fe, _folder.dir, _folder.case_text),
-      *_stepper, ground);
+      *_stepper, load);
   add_recorders(history);
-  _run = history.run();
+  // An initial velocity (fresh runs; a restart takes the checkpoint's
+  // state): the state starts from the static displacement.
+  engine::InitialState initial;
+  if (_loads.initial_velocity && !_s.restart)
+  {
+    _initial = initial_motion(_comm, _M.mat(), _K.mat(), _modal->damping, load,
+                              _loads.initial_velocity, _tie, _s.factorization);
+    initial = {nullptr, _initial.v0.vec(), _initial.a0.vec()};
+  }
+  _run = history.run(initial);
 }
 
 void ConcreteSeismicAnalysis::add_recorders(engine::TimeHistory& history)
@@ -599,9 +616,14 @@ void ConcreteSeismicAnalysis::add_recorders(engine::TimeHistory& history)
           [this]() -> std::vector<std::span<const double>> {
             return {_cm.kappa_t(), _cm.kappa_c(), _cm.strain_rate()};
           }});
+  _point_states = std::make_unique<PointStates>(
+      *_fe.V(), _s.history_points, _s.steps, *_stepper, *_u,
+      [this](int k, int c)
+      { return _s.motion[c].active ? _s.motion[c].acceleration[k] : 0.0; },
+      _u_static_full.vec());
   for (engine::Observer* o : std::initializer_list<engine::Observer*>{
            _u.get(), _stresses.get(), _concrete_state.get(), _points.get(),
-           _face_u.get(), _fields.get()})
+           _point_states.get(), _face_u.get(), _fields.get()})
     history.observe(*o);
 }
 
@@ -625,6 +647,9 @@ json ConcreteSeismicAnalysis::results()
       {_static_seconds, _modal->seconds, _stepper->factor_seconds(),
        _run.loop_seconds, _run.restarted_from_step});
   summary.update(crest_summary);
+  if (!_s.history_points.empty())
+    summary["history_points"] =
+        _point_states->write_csv(_comm, _s.scheme.dt, dir / "histories.csv");
   write_concrete_outputs(summary);
   // The Newton statistics cover every step (restored at a restart).
   const int steps_all = std::max(1, _s.steps);
@@ -699,11 +724,10 @@ void ConcreteSeismicAnalysis::write_concrete_outputs(json& summary) const
 
 std::unique_ptr<SeismicAnalysis>
 concrete_seismic_analysis(fem::ElasticModel& fe, const SeismicSettings& s,
-                          const ConcreteBulk& bulk,
-                          const std::vector<Vec>& extra_static_loads,
+                          const ConcreteBulk& bulk, const ModelLoads& loads,
                           const RunFolder& folder, Mat tie)
 {
-  return std::make_unique<ConcreteSeismicAnalysis>(
-      fe, s, bulk, extra_static_loads, folder, tie);
+  return std::make_unique<ConcreteSeismicAnalysis>(fe, s, bulk, loads, folder,
+                                                   tie);
 }
 } // namespace damseis::analysis

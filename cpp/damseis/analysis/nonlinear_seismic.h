@@ -32,29 +32,29 @@ struct ConcreteBulk
 /// initial elastic ones and must match `bulk.concrete.params` in the dam
 /// region) that writes into `folder.dir` what run_linear_seismic writes,
 /// plus dam_points.csv (per dam quadrature point: envelopes, equivalent
-/// viscoplastic strains, maximum strain rates). `extra_static_loads`
-/// (full-space vectors, zero at fixed dofs) are applied with the reservoir
-/// in the static stage (silt, uplift). `tie` (optional) ties bonded joints,
-/// u = P u_r, as in run_linear_seismic: the Newton iteration runs on the
-/// tied unknowns (TiedConcreteSystem). Checkpoints and signals as in
-/// run_linear_seismic. Collective.
+/// viscoplastic strains, maximum strain rates). `loads` as in
+/// run_linear_seismic: the static ones are applied with the reservoir in
+/// the static stage (silt, uplift, body forces), the timed ones with the
+/// ground motion, and an initial velocity starts the time history. `tie`
+/// (optional) ties bonded joints, u = P u_r, as in run_linear_seismic: the
+/// Newton iteration runs on the tied unknowns (TiedConcreteSystem). Checkpoints
+/// and signals as in run_linear_seismic. Collective.
 ///
 /// Throws dynamics::StepFailure if a step cannot be solved (the outputs
 /// written so far stay; no unconverged step is accepted).
-std::unique_ptr<SeismicAnalysis> concrete_seismic_analysis(
-    fem::ElasticModel& fe, const SeismicSettings& settings,
-    const ConcreteBulk& bulk, const std::vector<Vec>& extra_static_loads,
-    const RunFolder& folder, Mat tie = nullptr);
+std::unique_ptr<SeismicAnalysis>
+concrete_seismic_analysis(fem::ElasticModel& fe,
+                          const SeismicSettings& settings,
+                          const ConcreteBulk& bulk, const ModelLoads& loads,
+                          const RunFolder& folder, Mat tie = nullptr);
 
 /// All phases of that analysis; returns the summary.
 inline nlohmann::json
 run_nonlinear_seismic(fem::ElasticModel& fe, const SeismicSettings& settings,
-                      const ConcreteBulk& bulk,
-                      const std::vector<Vec>& extra_static_loads,
+                      const ConcreteBulk& bulk, const ModelLoads& loads,
                       const RunFolder& folder, Mat tie = nullptr)
 {
-  return concrete_seismic_analysis(fe, settings, bulk, extra_static_loads,
-                                   folder, tie)
+  return concrete_seismic_analysis(fe, settings, bulk, loads, folder, tie)
       ->run();
 }
 } // namespace damseis::analysis

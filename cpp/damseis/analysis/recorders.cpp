@@ -112,7 +112,7 @@ PointStates::PointStates(const dolfinx::fem::FunctionSpace& V,
                          const std::vector<NamedPoint>& points, int steps,
                          const engine::Stepper& stepper,
                          const FullDisplacement& full,
-                         std::function<double(int, int)> ground)
+                         std::function<double(int, int)> ground, Vec static_u)
     : _dim(V.dofmap()->index_map_bs()), _stepper(stepper), _full(full),
       _ground(std::move(ground))
 {
@@ -120,6 +120,8 @@ PointStates::PointStates(const dolfinx::fem::FunctionSpace& V,
   {
     _names.push_back(name);
     _probes.emplace_back(V, x);
+    _static.push_back(static_u ? _probes.back().value(static_u)
+                               : std::array<double, 3>{0, 0, 0});
   }
   _hist.assign((steps + 1) * _probes.size() * 4 * _dim, 0.0);
 }
@@ -139,7 +141,7 @@ void PointStates::record(int k, double)
       for (int c = 0; c < _dim; ++c)
       {
         double* row = &_hist[((k * n + p) * 4) * _dim];
-        row[q * _dim + c] = value[c];
+        row[q * _dim + c] = value[c] - (q == 0 ? _static[p][c] : 0.0);
         // The absolute acceleration on the owner (0 elsewhere: summed).
         if (q == 2)
           row[3 * _dim + c] =

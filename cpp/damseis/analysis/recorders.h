@@ -93,11 +93,14 @@ class PointStates : public engine::Observer
 {
 public:
   using NamedPoint = std::pair<std::string, std::array<double, 3>>;
-  /// `ground(k, c)`: the ground acceleration of component c at step k.
+  /// `ground(k, c)`: the ground acceleration of component c at step k;
+  /// `static_u` (full space, may be null): the static displacement, taken
+  /// off where the state is total (the displacements are then the seismic
+  /// ones in every analysis).
   PointStates(const dolfinx::fem::FunctionSpace& V,
               const std::vector<NamedPoint>& points, int steps,
               const engine::Stepper& stepper, const FullDisplacement& full,
-              std::function<double(int, int)> ground);
+              std::function<double(int, int)> ground, Vec static_u = nullptr);
   void record(int k, double t) override;
   void save(engine::Arrays& arrays) const override;
   void restore(const engine::CheckpointData& data) override;
@@ -113,6 +116,8 @@ private:
   const engine::Stepper& _stepper;
   const FullDisplacement& _full;
   std::function<double(int, int)> _ground;
+  /// Per point: the static displacement taken off (owner rank).
+  std::vector<std::array<double, 3>> _static;
   std::vector<double> _hist; ///< per step, point, quantity, component
 };
 
