@@ -164,8 +164,6 @@ MeshFile read_mesh_file(MPI_Comm comm, const std::filesystem::path& file,
                  [](unsigned char c) { return std::tolower(c); });
   if (ext == ".xdmf")
     return read_xdmf(comm, file, grids);
-  int rank = 0;
-  MPI_Comm_rank(comm, &rank);
   MeshFile out;
   // gmsh lives on rank 0 from opening the file to the end of the
   // distribution (model_from_gmsh reads the open model there).
