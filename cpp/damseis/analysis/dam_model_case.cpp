@@ -386,6 +386,10 @@ input::Schema dam_model_schema()
                  "acceleration are recorded (histories.csv)");
   s.real_array("output.history_points", "[]", "m",
                "their coordinates (2 or 3 per point)");
+  s.string_array("output.history_groups", "[]", "-",
+                 "groups of cells or facets whose mean displacement, "
+                 "velocity and acceleration are recorded "
+                 "(group_histories.csv)");
   add_seismic_keys(s, dam_model_directions(), "[]", "[]");
   add_concrete_keys(s);
   s.set_default("reservoir.level", "0");
@@ -705,6 +709,25 @@ DamModelConfig read_dam_model_config(const input::Case& c)
   for (const auto& [name, x] : cfg.history_points)
     check_point(c, mesh.model, "output.history_points", x, cfg.dim);
   cfg.seismic.history_points = cfg.history_points;
+  const auto groups = c.strings("output.history_groups");
+  check_plain(c, "output.history_groups", groups, true);
+  check_unique(c, "output.history_groups", groups);
+  for (const auto& g : groups)
+  {
+    const auto it = mesh.groups.find(g);
+    if (it == mesh.groups.end() || it->second.dim < cfg.dim - 1)
+      c.fail("output.history_groups",
+             "names \"" + g + "\", which is not a group of cells or facets",
+             "groups of cells (" + name_list(mesh.groups, cfg.dim) +
+                 ") or facets (" + name_list(mesh.groups, cfg.dim - 1) + ")");
+    cfg.seismic.history_groups.push_back(
+        {g,
+         it->second.dim == cfg.dim
+             ? std::shared_ptr<const dolfinx::mesh::MeshTags<std::int32_t>>(
+                   mesh.model.cell_tags)
+             : cfg.group_facets,
+         it->second.tag});
+  }
   cfg.seismic.singular_where = "none (a user mesh: raw extremes)";
   cfg.traction_history_kind = c.string("loads.traction_history");
   if (!cfg.tractions.empty())

@@ -1,6 +1,7 @@
 #include "recorders.h"
 #include <damseis/engine/checkpoint.h>
 #include <damseis/linalg/petsc_vectors.h>
+#include <dolfinx/fem/utils.h>
 #include <fstream>
 
 namespace damseis::analysis
@@ -207,6 +208,150 @@ nlohmann::json PointStates::write_csv(MPI_Comm comm, double dt,
     for (int q = 0; q < 4; ++q)
       for (int c = 0; c < _dim; ++c)
         out << "," << _names[p] << "_" << quantity[q] << axis[c] << "_"
+            << unit[q];
+  out << "\n";
+  out.precision(10);
+  for (std::size_t k = 0; k < steps; ++k)
+  {
+    out << k * dt;
+    for (std::size_t j = 0; j < row; ++j)
+      out << "," << _hist[k * row + j];
+    out << "\n";
+  }
+  return peaks;
+}
+
+GroupStates::GroupStates(
+    const dolfinx::fem::FunctionSpace& V,
+    const std::vector<SeismicSettings::HistoryGroup>& groups, int steps,
+    const engine::Stepper& stepper, const FullDisplacement& full,
+    std::function<double(int, int)> ground, Vec static_u)
+    : _dim(V.dofmap()->index_map_bs()), _comm(V.mesh()->comm()),
+      _stepper(stepper), _full(full), _ground(std::move(ground))
+{
+  const std::int32_t owned = V.dofmap()->index_map->size_local();
+  for (const auto& g : groups)
+  {
+    std::vector<std::int32_t> entities;
+    for (std::size_t i = 0; i < g.tags->indices().size(); ++i)
+      if (g.tags->values()[i] == g.tag)
+        entities.push_back(g.tags->indices()[i]);
+    auto blocks =
+        dolfinx::fem::locate_dofs_topological(V, g.tags->dim(), entities, true);
+    std::erase_if(blocks, [owned](std::int32_t b) { return b >= owned; });
+    _names.push_back(g.name);
+    _blocks.push_back(std::move(blocks));
+  }
+  _count.resize(_blocks.size());
+  for (std::size_t i = 0; i < _blocks.size(); ++i)
+    _count[i] = static_cast<double>(_blocks[i].size());
+  MPI_Allreduce(MPI_IN_PLACE, _count.data(), static_cast<int>(_count.size()),
+                MPI_DOUBLE, MPI_SUM, _comm);
+  _static.assign(_blocks.size() * _dim, 0.0);
+  if (static_u)
+  {
+    local_sums(static_u, _static);
+    MPI_Allreduce(MPI_IN_PLACE, _static.data(),
+                  static_cast<int>(_static.size()), MPI_DOUBLE, MPI_SUM, _comm);
+  }
+  _hist.assign((steps + 1) * _blocks.size() * 4 * _dim, 0.0);
+}
+
+void GroupStates::local_sums(Vec x, std::vector<double>& out) const
+{
+  const double* a = nullptr;
+  VecGetArrayRead(x, &a);
+  for (std::size_t g = 0; g < _blocks.size(); ++g)
+    for (std::int32_t b : _blocks[g])
+      for (int c = 0; c < _dim; ++c)
+        out[g * _dim + c] += a[b * _dim + c];
+  VecRestoreArrayRead(x, &a);
+}
+
+void GroupStates::record(int k, double)
+{
+  const std::size_t n = _blocks.size();
+  if (n == 0)
+    return;
+  // u, v, a summed over the groups' owned nodes, one reduction.
+  std::vector<double> sums(3 * n * _dim, 0.0), part(n * _dim);
+  const std::array<Vec, 3> states = {_stepper.u(), _stepper.v(), _stepper.a()};
+  for (int q = 0; q < 3; ++q)
+  {
+    std::fill(part.begin(), part.end(), 0.0);
+    local_sums(_full.full(states[q]), part);
+    std::copy(part.begin(), part.end(), sums.begin() + q * n * _dim);
+  }
+  MPI_Allreduce(MPI_IN_PLACE, sums.data(), static_cast<int>(sums.size()),
+                MPI_DOUBLE, MPI_SUM, _comm);
+  for (std::size_t g = 0; g < n; ++g)
+  {
+    double* row = &_hist[((k * n + g) * 4) * _dim];
+    const double w = _count[g] > 0 ? 1.0 / _count[g] : 0.0;
+    for (int c = 0; c < _dim; ++c)
+    {
+      row[c] = w * (sums[g * _dim + c] - _static[g * _dim + c]);
+      row[_dim + c] = w * sums[(n + g) * _dim + c];
+      row[2 * _dim + c] = w * sums[(2 * n + g) * _dim + c];
+      row[3 * _dim + c] = row[2 * _dim + c] + _ground(k, c);
+    }
+  }
+}
+
+void GroupStates::save(engine::Arrays& arrays) const
+{
+  if (!_blocks.empty())
+    arrays["group_states"] = _hist;
+}
+
+void GroupStates::restore(const engine::CheckpointData& d)
+{
+  if (!_blocks.empty())
+    _hist = engine::checkpoint_array(d, "group_states", _hist.size());
+}
+
+nlohmann::json GroupStates::write_csv(MPI_Comm comm, double dt,
+                                      const std::filesystem::path& file) const
+{
+  nlohmann::json peaks = nlohmann::json::object();
+  const std::size_t n = _blocks.size();
+  if (n == 0)
+    return peaks;
+  const std::size_t row = n * 4 * _dim;
+  const std::size_t steps = _hist.size() / row;
+  for (std::size_t g = 0; g < n; ++g)
+  {
+    double peak[4] = {0, 0, 0, 0};
+    for (std::size_t k = 0; k < steps; ++k)
+      for (int q = 0; q < 4; ++q)
+      {
+        double norm2 = 0.0;
+        for (int c = 0; c < _dim; ++c)
+        {
+          const double v = _hist[k * row + (g * 4 + q) * _dim + c];
+          norm2 += v * v;
+        }
+        peak[q] = std::max(peak[q], std::sqrt(norm2));
+      }
+    peaks[_names[g]] = {{"nodes", _count[g]},
+                        {"max_mean_displacement_m", peak[0]},
+                        {"max_mean_velocity_m_per_s", peak[1]},
+                        {"max_mean_acceleration_m_per_s2", peak[2]},
+                        {"max_mean_absolute_acceleration_m_per_s2", peak[3]}};
+  }
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  if (rank != 0)
+    return peaks;
+  const char* axis = "xyz";
+  const char* quantity[4] = {"u", "v", "a", "a"};
+  const char* unit[4] = {"m", "m_per_s", "m_per_s2", "abs_m_per_s2"};
+  std::ofstream out(file);
+  out << "t_s";
+  for (std::size_t g = 0; g < n; ++g)
+    for (int q = 0; q < 4; ++q)
+      for (int c = 0; c < _dim; ++c)
+        out << "," << _names[g] << "_" << quantity[q] << axis[c] << "_"
             << unit[q];
   out << "\n";
   out.precision(10);

@@ -4,6 +4,7 @@
 // fields. Each saves and restores its recording in checkpoints.
 #pragma once
 
+#include "seismic_settings.h"
 #include <damseis/engine/parts.h>
 #include <damseis/fem/elastic_model.h>
 #include <damseis/results/displacement_envelope.h>
@@ -119,6 +120,41 @@ private:
   /// Per point: the static displacement taken off (owner rank).
   std::vector<std::array<double, 3>> _static;
   std::vector<double> _hist; ///< per step, point, quantity, component
+};
+
+/// Displacement, velocity and acceleration (relative to the supports,
+/// static part taken off where the state is total) and the absolute
+/// acceleration, averaged over the nodes of named groups of cells or
+/// facets, per step (the same on every rank: one reduction per step).
+class GroupStates : public engine::Observer
+{
+public:
+  GroupStates(const dolfinx::fem::FunctionSpace& V,
+              const std::vector<SeismicSettings::HistoryGroup>& groups,
+              int steps, const engine::Stepper& stepper,
+              const FullDisplacement& full,
+              std::function<double(int, int)> ground, Vec static_u = nullptr);
+  void record(int k, double t) override;
+  void save(engine::Arrays& arrays) const override;
+  void restore(const engine::CheckpointData& data) override;
+  /// group_histories.csv on rank 0 and the summary's peaks per group.
+  nlohmann::json write_csv(MPI_Comm comm, double dt,
+                           const std::filesystem::path& file) const;
+
+private:
+  /// Per group: sum of the components of x over the group's owned
+  /// nodes, into `out` (dim values per group).
+  void local_sums(Vec x, std::vector<double>& out) const;
+  std::vector<std::string> _names;
+  std::vector<std::vector<std::int32_t>> _blocks; ///< owned nodes per group
+  std::vector<double> _count;                     ///< nodes per group (all)
+  int _dim;
+  MPI_Comm _comm;
+  const engine::Stepper& _stepper;
+  const FullDisplacement& _full;
+  std::function<double(int, int)> _ground;
+  std::vector<double> _static; ///< per group, component: static mean
+  std::vector<double> _hist;   ///< per step, group, quantity, component
 };
 
 /// Envelope of the horizontal displacement along a tagged face relative to

@@ -53,6 +53,16 @@ struct SeismicSettings
   /// The cell tags of the dam (stress envelopes): geometry::tags::dam in
   /// the built models, the user's groups in dam_model.
   std::vector<int> dam_regions = {1};
+  /// Named groups (cells or facets, tagged `tag` in `tags`) whose mean
+  /// displacement, velocity and acceleration are recorded
+  /// (group_histories.csv).
+  struct HistoryGroup
+  {
+    std::string name;
+    std::shared_ptr<const dolfinx::mesh::MeshTags<std::int32_t>> tags;
+    int tag = 0;
+  };
+  std::vector<HistoryGroup> history_groups;
   /// Named points whose displacement, velocity and acceleration are
   /// recorded (histories.csv).
   std::vector<std::pair<std::string, std::array<double, 3>>> history_points;
