@@ -78,6 +78,7 @@ private:
   std::unique_ptr<FieldRecorder> _fields;
   std::unique_ptr<PointStates> _point_states;
   std::unique_ptr<GroupStates> _group_states;
+  std::unique_ptr<PointStresses> _point_stresses;
   Vector _v0{nullptr, false}, _a0{nullptr, false};
   Vector _s_field{nullptr, false}, _u_static_full{nullptr, false},
       _u_out{nullptr, false};
@@ -257,10 +258,12 @@ void LinearSeismicAnalysis::add_recorders(engine::TimeHistory& history)
       [this](int k, int c)
       { return _s.motion[c].active ? _s.motion[c].acceleration[k] : 0.0; },
       nullptr);
+  _point_stresses = std::make_unique<PointStresses>(_comm, _s.history_points,
+                                                    _s.steps, *_stresses);
 
   for (engine::Observer* o : std::initializer_list<engine::Observer*>{
            _u.get(), _stresses.get(), _points.get(), _point_states.get(),
-           _group_states.get()})
+           _group_states.get(), _point_stresses.get()})
     history.observe(*o);
   if (_face_u)
     history.observe(*_face_u);
@@ -299,6 +302,9 @@ json LinearSeismicAnalysis::results()
   if (!_s.history_groups.empty())
     summary["history_groups"] = _group_states->write_csv(
         _comm, _s.scheme.dt, dir / "group_histories.csv");
+  if (!_s.history_points.empty())
+    summary["history_point_stresses"] = _point_stresses->write_csv(
+        _comm, _s.scheme.dt, dir / "stress_histories.csv");
   summary["wall_seconds"] = seconds_since(_wall_start);
   print_summary_line(_comm, summary);
   return summary;

@@ -402,6 +402,7 @@ private:
   std::unique_ptr<FieldRecorder> _fields;
   std::unique_ptr<PointStates> _point_states;
   std::unique_ptr<GroupStates> _group_states;
+  std::unique_ptr<PointStresses> _point_stresses;
   InitialMotion _initial;
   std::vector<double> _s_field;
   std::vector<std::int8_t> _in_dam;
@@ -627,10 +628,12 @@ void ConcreteSeismicAnalysis::add_recorders(engine::TimeHistory& history)
       [this](int k, int c)
       { return _s.motion[c].active ? _s.motion[c].acceleration[k] : 0.0; },
       _u_static_full.vec());
+  _point_stresses = std::make_unique<PointStresses>(_comm, _s.history_points,
+                                                    _s.steps, *_stresses);
   for (engine::Observer* o : std::initializer_list<engine::Observer*>{
            _u.get(), _stresses.get(), _concrete_state.get(), _points.get(),
-           _point_states.get(), _group_states.get(), _face_u.get(),
-           _fields.get()})
+           _point_states.get(), _group_states.get(), _point_stresses.get(),
+           _face_u.get(), _fields.get()})
     history.observe(*o);
 }
 
@@ -660,6 +663,9 @@ json ConcreteSeismicAnalysis::results()
   if (!_s.history_groups.empty())
     summary["history_groups"] = _group_states->write_csv(
         _comm, _s.scheme.dt, dir / "group_histories.csv");
+  if (!_s.history_points.empty())
+    summary["history_point_stresses"] = _point_stresses->write_csv(
+        _comm, _s.scheme.dt, dir / "stress_histories.csv");
   write_concrete_outputs(summary);
   // The Newton statistics cover every step (restored at a restart).
   const int steps_all = std::max(1, _s.steps);

@@ -221,6 +221,121 @@ nlohmann::json PointStates::write_csv(MPI_Comm comm, double dt,
   return peaks;
 }
 
+PointStresses::PointStresses(MPI_Comm comm,
+                             const std::vector<PointStates::NamedPoint>& points,
+                             int steps, const StressRecorder& stresses)
+    : _nc(stresses.envelope().components()), _stresses(stresses)
+{
+  const auto& env = stresses.envelope();
+  const std::int32_t owned =
+      static_cast<std::int32_t>(env.max_principal().size());
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  for (const auto& [name, x] : points)
+  {
+    struct
+    {
+      double d;
+      int rank;
+    } mine{HUGE_VAL, rank}, best;
+    std::int32_t arg = -1;
+    for (std::int32_t i = 0; i < owned; ++i)
+    {
+      const auto& p = env.point(i);
+      const double d = std::hypot(p[0] - x[0], p[1] - x[1], p[2] - x[2]);
+      if (d < mine.d)
+      {
+        mine.d = d;
+        arg = i;
+      }
+    }
+    MPI_Allreduce(&mine, &best, 1, MPI_DOUBLE_INT, MPI_MINLOC, comm);
+    std::array<double, 3> where = {0, 0, 0};
+    if (best.rank == rank && arg >= 0)
+      where = env.point(arg);
+    MPI_Bcast(where.data(), 3, MPI_DOUBLE, best.rank, comm);
+    _names.push_back(name);
+    _local.push_back(best.rank == rank ? arg : -1);
+    _where.push_back(where);
+  }
+  _hist.assign((steps + 1) * _names.size() * _nc, 0.0);
+}
+
+void PointStresses::record(int k, double)
+{
+  const auto s = _stresses.stress();
+  for (std::size_t p = 0; p < _names.size(); ++p)
+  {
+    if (_local[p] < 0)
+      continue;
+    for (int c = 0; c < _nc; ++c)
+      _hist[(k * _names.size() + p) * _nc + c] = s[_local[p] * _nc + c];
+  }
+}
+
+void PointStresses::save(engine::Arrays& arrays) const
+{
+  if (!_names.empty())
+    arrays["point_stresses"] = _hist;
+}
+
+void PointStresses::restore(const engine::CheckpointData& d)
+{
+  if (!_names.empty())
+    _hist = engine::checkpoint_array(d, "point_stresses", _hist.size());
+}
+
+nlohmann::json PointStresses::write_csv(MPI_Comm comm, double dt,
+                                        const std::filesystem::path& file)
+{
+  nlohmann::json out = nlohmann::json::object();
+  const std::size_t n = _names.size();
+  if (n == 0)
+    return out;
+  results::reduce_history(comm, _hist);
+  const char* names2[3] = {"sxx", "syy", "sxy"};
+  const char* names3[6] = {"sxx", "syy", "szz", "sxy", "syz", "sxz"};
+  const char** comp = _nc == 3 ? names2 : names3;
+  const std::size_t row = n * _nc;
+  const std::size_t steps = _hist.size() / row;
+  for (std::size_t p = 0; p < n; ++p)
+  {
+    nlohmann::json peaks = nlohmann::json::object();
+    for (int c = 0; c < _nc; ++c)
+    {
+      double hi = -HUGE_VAL, lo = HUGE_VAL;
+      for (std::size_t k = 0; k < steps; ++k)
+      {
+        hi = std::max(hi, _hist[k * row + p * _nc + c]);
+        lo = std::min(lo, _hist[k * row + p * _nc + c]);
+      }
+      peaks[comp[c]] = {{"max_mpa", 1e-6 * hi}, {"min_mpa", 1e-6 * lo}};
+    }
+    out[_names[p]] = {
+        {"stress_point", {_where[p][0], _where[p][1], _where[p][2]}},
+        {"components", peaks}};
+  }
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  if (rank != 0)
+    return out;
+  std::ofstream f(file);
+  f << "t_s";
+  for (std::size_t p = 0; p < n; ++p)
+    for (int c = 0; c < _nc; ++c)
+      f << "," << _names[p] << "_" << comp[c] << "_mpa";
+  f << "\n";
+  f.precision(10);
+  for (std::size_t k = 0; k < steps; ++k)
+  {
+    f << k * dt;
+    for (std::size_t j = 0; j < row; ++j)
+      f << "," << 1e-6 * _hist[k * row + j];
+    f << "\n";
+  }
+  return out;
+}
+
 GroupStates::GroupStates(
     const dolfinx::fem::FunctionSpace& V,
     const std::vector<SeismicSettings::HistoryGroup>& groups, int steps,

@@ -122,6 +122,32 @@ private:
   std::vector<double> _hist; ///< per step, point, quantity, component
 };
 
+/// The stress components at named points (the nearest stress point of the
+/// envelope's, in the stress of the envelopes: total or seismic), per step;
+/// on the owning rank until written.
+class PointStresses : public engine::Observer
+{
+public:
+  PointStresses(MPI_Comm comm,
+                const std::vector<PointStates::NamedPoint>& points, int steps,
+                const StressRecorder& stresses);
+  void record(int k, double t) override;
+  void save(engine::Arrays& arrays) const override;
+  void restore(const engine::CheckpointData& data) override;
+  /// stress_histories.csv on rank 0 [MPa] and, per point, where its stress
+  /// point is and the peaks of the components. Collective.
+  nlohmann::json write_csv(MPI_Comm comm, double dt,
+                           const std::filesystem::path& file);
+
+private:
+  std::vector<std::string> _names;
+  std::vector<std::int32_t> _local;          ///< owned point, -1 elsewhere
+  std::vector<std::array<double, 3>> _where; ///< the stress points
+  int _nc;
+  const StressRecorder& _stresses;
+  std::vector<double> _hist; ///< per step, point, component
+};
+
 /// Displacement, velocity and acceleration (relative to the supports,
 /// static part taken off where the state is total) and the absolute
 /// acceleration, averaged over the nodes of named groups of cells or
