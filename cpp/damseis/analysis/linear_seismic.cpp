@@ -76,9 +76,7 @@ private:
   std::unique_ptr<PointHistories> _points;
   std::unique_ptr<FaceDisplacementRecorder> _face_u;
   std::unique_ptr<FieldRecorder> _fields;
-  std::unique_ptr<PointStates> _point_states;
-  std::unique_ptr<GroupStates> _group_states;
-  std::unique_ptr<PointStresses> _point_stresses;
+  std::unique_ptr<NamedHistories> _named;
   Vector _v0{nullptr, false}, _a0{nullptr, false};
   Vector _s_field{nullptr, false}, _u_static_full{nullptr, false},
       _u_out{nullptr, false};
@@ -248,23 +246,14 @@ void LinearSeismicAnalysis::add_recorders(engine::TimeHistory& history)
       },
       *_stresses);
 
-  // Displacement, velocity and acceleration at the named points.
-  _point_states = std::make_unique<PointStates>(
-      *_fe.V(), _s.history_points, _s.steps, *_stepper, *_u,
-      [this](int k, int c)
-      { return _s.motion[c].active ? _s.motion[c].acceleration[k] : 0.0; });
-  _group_states = std::make_unique<GroupStates>(
-      *_fe.V(), _s.history_groups, _s.steps, *_stepper, *_u,
-      [this](int k, int c)
-      { return _s.motion[c].active ? _s.motion[c].acceleration[k] : 0.0; },
-      nullptr);
-  _point_stresses = std::make_unique<PointStresses>(_comm, _s.history_points,
-                                                    _s.steps, *_stresses);
-
+  // Displacement, velocity, acceleration and stress at the named points,
+  // means over the named groups.
+  _named = std::make_unique<NamedHistories>(_comm, *_fe.V(), _s, *_stepper, *_u,
+                                            *_stresses, nullptr);
   for (engine::Observer* o : std::initializer_list<engine::Observer*>{
-           _u.get(), _stresses.get(), _points.get(), _point_states.get(),
-           _group_states.get(), _point_stresses.get()})
+           _u.get(), _stresses.get(), _points.get()})
     history.observe(*o);
+  _named->observe(history);
   if (_face_u)
     history.observe(*_face_u);
   history.observe(*_fields);
@@ -296,15 +285,7 @@ json LinearSeismicAnalysis::results()
       {_static_seconds, _modal->seconds, _stepper->factor_seconds(),
        _run.loop_seconds, _run.restarted_from_step});
   summary.update(crest_summary);
-  if (!_s.history_points.empty())
-    summary["history_points"] =
-        _point_states->write_csv(_comm, _s.scheme.dt, dir / "histories.csv");
-  if (!_s.history_groups.empty())
-    summary["history_groups"] = _group_states->write_csv(
-        _comm, _s.scheme.dt, dir / "group_histories.csv");
-  if (!_s.history_points.empty())
-    summary["history_point_stresses"] = _point_stresses->write_csv(
-        _comm, _s.scheme.dt, dir / "stress_histories.csv");
+  _named->write(_comm, dir, summary);
   summary["wall_seconds"] = seconds_since(_wall_start);
   print_summary_line(_comm, summary);
   return summary;

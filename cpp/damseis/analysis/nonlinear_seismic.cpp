@@ -400,9 +400,7 @@ private:
   std::unique_ptr<PointHistories> _points;
   std::unique_ptr<FaceDisplacementRecorder> _face_u;
   std::unique_ptr<FieldRecorder> _fields;
-  std::unique_ptr<PointStates> _point_states;
-  std::unique_ptr<GroupStates> _group_states;
-  std::unique_ptr<PointStresses> _point_stresses;
+  std::unique_ptr<NamedHistories> _named;
   InitialMotion _initial;
   std::vector<double> _s_field;
   std::vector<std::int8_t> _in_dam;
@@ -618,23 +616,13 @@ void ConcreteSeismicAnalysis::add_recorders(engine::TimeHistory& history)
           [this]() -> std::vector<std::span<const double>> {
             return {_cm.kappa_t(), _cm.kappa_c(), _cm.strain_rate()};
           }});
-  _point_states = std::make_unique<PointStates>(
-      *_fe.V(), _s.history_points, _s.steps, *_stepper, *_u,
-      [this](int k, int c)
-      { return _s.motion[c].active ? _s.motion[c].acceleration[k] : 0.0; },
-      _u_static_full.vec());
-  _group_states = std::make_unique<GroupStates>(
-      *_fe.V(), _s.history_groups, _s.steps, *_stepper, *_u,
-      [this](int k, int c)
-      { return _s.motion[c].active ? _s.motion[c].acceleration[k] : 0.0; },
-      _u_static_full.vec());
-  _point_stresses = std::make_unique<PointStresses>(_comm, _s.history_points,
-                                                    _s.steps, *_stresses);
+  _named = std::make_unique<NamedHistories>(_comm, *_fe.V(), _s, *_stepper, *_u,
+                                            *_stresses, _u_static_full.vec());
   for (engine::Observer* o : std::initializer_list<engine::Observer*>{
            _u.get(), _stresses.get(), _concrete_state.get(), _points.get(),
-           _point_states.get(), _group_states.get(), _point_stresses.get(),
            _face_u.get(), _fields.get()})
     history.observe(*o);
+  _named->observe(history);
 }
 
 json ConcreteSeismicAnalysis::results()
@@ -657,15 +645,7 @@ json ConcreteSeismicAnalysis::results()
       {_static_seconds, _modal->seconds, _stepper->factor_seconds(),
        _run.loop_seconds, _run.restarted_from_step});
   summary.update(crest_summary);
-  if (!_s.history_points.empty())
-    summary["history_points"] =
-        _point_states->write_csv(_comm, _s.scheme.dt, dir / "histories.csv");
-  if (!_s.history_groups.empty())
-    summary["history_groups"] = _group_states->write_csv(
-        _comm, _s.scheme.dt, dir / "group_histories.csv");
-  if (!_s.history_points.empty())
-    summary["history_point_stresses"] = _point_stresses->write_csv(
-        _comm, _s.scheme.dt, dir / "stress_histories.csv");
+  _named->write(_comm, dir, summary);
   write_concrete_outputs(summary);
   // The Newton statistics cover every step (restored at a restart).
   const int steps_all = std::max(1, _s.steps);

@@ -12,6 +12,59 @@ std::vector<double> copy_of(std::span<const double> x)
 {
   return std::vector<double>(x.begin(), x.end());
 }
+
+/// Per step, item, quantity (u, v, a, absolute a) and component: the
+/// largest norm over the steps of each item's quantity.
+std::vector<std::array<double, 4>> state_peaks(const std::vector<double>& hist,
+                                               std::size_t items, int dim)
+{
+  std::vector<std::array<double, 4>> peaks(items, {0, 0, 0, 0});
+  const std::size_t row = items * 4 * dim;
+  for (std::size_t k = 0; k < hist.size() / row; ++k)
+    for (std::size_t p = 0; p < items; ++p)
+      for (int q = 0; q < 4; ++q)
+      {
+        double norm2 = 0.0;
+        for (int c = 0; c < dim; ++c)
+        {
+          const double v = hist[k * row + (p * 4 + q) * dim + c];
+          norm2 += v * v;
+        }
+        peaks[p][q] = std::max(peaks[p][q], std::sqrt(norm2));
+      }
+  return peaks;
+}
+
+/// The table of such histories (rank 0): t, then per item the columns
+/// <name>_u<x>_m, _v<x>_m_per_s, _a<x>_m_per_s2, _a<x>_abs_m_per_s2.
+void write_state_table(MPI_Comm comm, const std::filesystem::path& file,
+                       double dt, const std::vector<std::string>& names,
+                       int dim, const std::vector<double>& hist)
+{
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  if (rank != 0)
+    return;
+  const char* axis = "xyz";
+  const char* quantity[4] = {"u", "v", "a", "a"};
+  const char* unit[4] = {"m", "m_per_s", "m_per_s2", "abs_m_per_s2"};
+  std::ofstream out(file);
+  out << "t_s";
+  for (const auto& name : names)
+    for (int q = 0; q < 4; ++q)
+      for (int c = 0; c < dim; ++c)
+        out << "," << name << "_" << quantity[q] << axis[c] << "_" << unit[q];
+  out << "\n";
+  out.precision(10);
+  const std::size_t row = names.size() * 4 * dim;
+  for (std::size_t k = 0; k < hist.size() / row; ++k)
+  {
+    out << k * dt;
+    for (std::size_t j = 0; j < row; ++j)
+      out << "," << hist[k * row + j];
+    out << "\n";
+  }
+}
 } // namespace
 
 FullDisplacement::FullDisplacement(const engine::Stepper& stepper, Mat tie)
@@ -168,56 +221,20 @@ nlohmann::json PointStates::write_csv(MPI_Comm comm, double dt,
                                       const std::filesystem::path& file)
 {
   nlohmann::json peaks = nlohmann::json::object();
-  const std::size_t n = _probes.size();
-  if (n == 0)
+  if (_probes.empty())
     return peaks;
   results::reduce_history(comm, _hist);
-  const std::size_t row = n * 4 * _dim;
-  const std::size_t steps = _hist.size() / row;
-  const char* axis = "xyz";
-  const char* quantity[4] = {"u", "v", "a", "a"};
-  const char* unit[4] = {"m", "m_per_s", "m_per_s2", "abs_m_per_s2"};
-  for (std::size_t p = 0; p < n; ++p)
+  const auto peak = state_peaks(_hist, _probes.size(), _dim);
+  for (std::size_t p = 0; p < _probes.size(); ++p)
   {
-    double peak[4] = {0, 0, 0, 0};
-    for (std::size_t k = 0; k < steps; ++k)
-      for (int q = 0; q < 4; ++q)
-      {
-        double norm2 = 0.0;
-        for (int c = 0; c < _dim; ++c)
-        {
-          const double v = _hist[k * row + (p * 4 + q) * _dim + c];
-          norm2 += v * v;
-        }
-        peak[q] = std::max(peak[q], std::sqrt(norm2));
-      }
     const auto& node = _probes[p].node();
     peaks[_names[p]] = {{"node", {node[0], node[1], node[2]}},
-                        {"max_displacement_m", peak[0]},
-                        {"max_velocity_m_per_s", peak[1]},
-                        {"max_acceleration_m_per_s2", peak[2]},
-                        {"max_absolute_acceleration_m_per_s2", peak[3]}};
+                        {"max_displacement_m", peak[p][0]},
+                        {"max_velocity_m_per_s", peak[p][1]},
+                        {"max_acceleration_m_per_s2", peak[p][2]},
+                        {"max_absolute_acceleration_m_per_s2", peak[p][3]}};
   }
-  int rank = 0;
-  MPI_Comm_rank(comm, &rank);
-  if (rank != 0)
-    return peaks;
-  std::ofstream out(file);
-  out << "t_s";
-  for (std::size_t p = 0; p < n; ++p)
-    for (int q = 0; q < 4; ++q)
-      for (int c = 0; c < _dim; ++c)
-        out << "," << _names[p] << "_" << quantity[q] << axis[c] << "_"
-            << unit[q];
-  out << "\n";
-  out.precision(10);
-  for (std::size_t k = 0; k < steps; ++k)
-  {
-    out << k * dt;
-    for (std::size_t j = 0; j < row; ++j)
-      out << "," << _hist[k * row + j];
-    out << "\n";
-  }
+  write_state_table(comm, file, dt, _names, _dim, _hist);
   return peaks;
 }
 
@@ -429,55 +446,62 @@ nlohmann::json GroupStates::write_csv(MPI_Comm comm, double dt,
                                       const std::filesystem::path& file) const
 {
   nlohmann::json peaks = nlohmann::json::object();
-  const std::size_t n = _blocks.size();
-  if (n == 0)
+  if (_blocks.empty())
     return peaks;
-  const std::size_t row = n * 4 * _dim;
-  const std::size_t steps = _hist.size() / row;
-  for (std::size_t g = 0; g < n; ++g)
-  {
-    double peak[4] = {0, 0, 0, 0};
-    for (std::size_t k = 0; k < steps; ++k)
-      for (int q = 0; q < 4; ++q)
-      {
-        double norm2 = 0.0;
-        for (int c = 0; c < _dim; ++c)
-        {
-          const double v = _hist[k * row + (g * 4 + q) * _dim + c];
-          norm2 += v * v;
-        }
-        peak[q] = std::max(peak[q], std::sqrt(norm2));
-      }
-    peaks[_names[g]] = {{"nodes", _count[g]},
-                        {"max_mean_displacement_m", peak[0]},
-                        {"max_mean_velocity_m_per_s", peak[1]},
-                        {"max_mean_acceleration_m_per_s2", peak[2]},
-                        {"max_mean_absolute_acceleration_m_per_s2", peak[3]}};
-  }
-  int rank = 0;
-  MPI_Comm_rank(comm, &rank);
-  if (rank != 0)
-    return peaks;
-  const char* axis = "xyz";
-  const char* quantity[4] = {"u", "v", "a", "a"};
-  const char* unit[4] = {"m", "m_per_s", "m_per_s2", "abs_m_per_s2"};
-  std::ofstream out(file);
-  out << "t_s";
-  for (std::size_t g = 0; g < n; ++g)
-    for (int q = 0; q < 4; ++q)
-      for (int c = 0; c < _dim; ++c)
-        out << "," << _names[g] << "_" << quantity[q] << axis[c] << "_"
-            << unit[q];
-  out << "\n";
-  out.precision(10);
-  for (std::size_t k = 0; k < steps; ++k)
-  {
-    out << k * dt;
-    for (std::size_t j = 0; j < row; ++j)
-      out << "," << _hist[k * row + j];
-    out << "\n";
-  }
+  const auto peak = state_peaks(_hist, _blocks.size(), _dim);
+  for (std::size_t g = 0; g < _blocks.size(); ++g)
+    peaks[_names[g]] = {
+        {"nodes", _count[g]},
+        {"max_mean_displacement_m", peak[g][0]},
+        {"max_mean_velocity_m_per_s", peak[g][1]},
+        {"max_mean_acceleration_m_per_s2", peak[g][2]},
+        {"max_mean_absolute_acceleration_m_per_s2", peak[g][3]}};
+  write_state_table(comm, file, dt, _names, _dim, _hist);
   return peaks;
+}
+
+NamedHistories::NamedHistories(MPI_Comm comm,
+                               const dolfinx::fem::FunctionSpace& V,
+                               const SeismicSettings& s,
+                               const engine::Stepper& stepper,
+                               const FullDisplacement& full,
+                               const StressRecorder& stresses, Vec static_u)
+    : _s(s),
+      _points(
+          V, s.history_points, s.steps, stepper, full,
+          [&s](int k, int c)
+          { return s.motion[c].active ? s.motion[c].acceleration[k] : 0.0; },
+          static_u),
+      _groups(
+          V, s.history_groups, s.steps, stepper, full,
+          [&s](int k, int c)
+          { return s.motion[c].active ? s.motion[c].acceleration[k] : 0.0; },
+          static_u),
+      _stresses(comm, s.history_points, s.steps, stresses)
+{
+}
+
+void NamedHistories::observe(engine::TimeHistory& history)
+{
+  history.observe(_points);
+  history.observe(_groups);
+  history.observe(_stresses);
+}
+
+void NamedHistories::write(MPI_Comm comm, const std::filesystem::path& dir,
+                           nlohmann::json& summary)
+{
+  const double dt = _s.scheme.dt;
+  if (!_s.history_points.empty())
+  {
+    summary["history_points"] =
+        _points.write_csv(comm, dt, dir / "histories.csv");
+    summary["history_point_stresses"] =
+        _stresses.write_csv(comm, dt, dir / "stress_histories.csv");
+  }
+  if (!_s.history_groups.empty())
+    summary["history_groups"] =
+        _groups.write_csv(comm, dt, dir / "group_histories.csv");
 }
 
 FaceDisplacementRecorder::FaceDisplacementRecorder(

@@ -6,6 +6,7 @@
 
 #include "seismic_settings.h"
 #include <damseis/engine/parts.h>
+#include <damseis/engine/time_history.h>
 #include <damseis/fem/elastic_model.h>
 #include <damseis/results/displacement_envelope.h>
 #include <damseis/results/field_writer.h>
@@ -181,6 +182,32 @@ private:
   std::function<double(int, int)> _ground;
   std::vector<double> _static; ///< per group, component: static mean
   std::vector<double> _hist;   ///< per step, group, quantity, component
+};
+
+/// The histories a case asks for by name (output.history_points,
+/// output.history_groups): states and stresses at points, means over
+/// groups; written as histories.csv, stress_histories.csv and
+/// group_histories.csv with their summary entries.
+class NamedHistories
+{
+public:
+  /// `static_u` (full space, may be null): the static displacement, taken
+  /// off where the state is total.
+  NamedHistories(MPI_Comm comm, const dolfinx::fem::FunctionSpace& V,
+                 const SeismicSettings& s, const engine::Stepper& stepper,
+                 const FullDisplacement& full, const StressRecorder& stresses,
+                 Vec static_u);
+  /// Adds the recorders (after `stresses`).
+  void observe(engine::TimeHistory& history);
+  /// The files and the summary entries. Collective.
+  void write(MPI_Comm comm, const std::filesystem::path& dir,
+             nlohmann::json& summary);
+
+private:
+  const SeismicSettings& _s;
+  PointStates _points;
+  GroupStates _groups;
+  PointStresses _stresses;
 };
 
 /// Envelope of the horizontal displacement along a tagged face relative to
