@@ -556,9 +556,11 @@ void read_dam_concrete(const input::Case& c, DamModelConfig& cfg)
       read_concrete_settings(c, first->material.E, first->material.nu);
 }
 
-DamModelConfig read_dam_model_config(const input::Case& c)
+namespace
 {
-  DamModelConfig cfg;
+/// The mesh file, read and distributed (collective).
+void read_mesh(const input::Case& c, DamModelConfig& cfg)
+{
   cfg.mesh_file = c.path("mesh.file");
   if (cfg.mesh_file.empty())
     c.fail("mesh.file", "is empty", "a gmsh .msh file with physical groups");
@@ -576,14 +578,26 @@ DamModelConfig read_dam_model_config(const input::Case& c)
            "tetrahedra in physical groups, or an XDMF mesh with cell and "
            "facet tags (mesh.xdmf_*)");
   }
-  const geometry::MeshFile& mesh = *cfg.mesh;
-  cfg.dim = mesh.tdim;
+  cfg.dim = cfg.mesh->tdim;
   cfg.order = static_cast<int>(c.integer("mesh.order"));
   cfg.plane = c.string("mesh.plane") == "plane_stress"
                   ? fem::PlaneMode::plane_stress
                   : fem::PlaneMode::plane_strain;
+  const std::int64_t flat = geometry::degenerate_cells(cfg.mesh->model);
+  if (flat > 0)
+    c.fail("mesh.file",
+           "has " + std::to_string(flat) +
+               " degenerate cells (zero area or volume)",
+           "a mesh without flat or collapsed cells (check it in gmsh: "
+           "Tools > Statistics, quality)");
+}
 
-  // Roles of the groups.
+/// The roles of the groups: regions, supports, reservoir, joints, loads,
+/// output faces and points; each facet group in one role, loads on the
+/// boundary.
+void read_roles(const input::Case& c, DamModelConfig& cfg)
+{
+  const geometry::MeshFile& mesh = *cfg.mesh;
   cfg.regions = read_regions(c, mesh);
   cfg.fixed = facet_groups(c, mesh, "supports.fixed");
   if (cfg.fixed.empty())
@@ -622,43 +636,42 @@ DamModelConfig read_dam_model_config(const input::Case& c)
                "joint there)");
     }
   }
+  // A facet group has one role.
+  std::map<std::string, std::string> role;
+  for (const auto& [key, groups] : {std::pair{"supports.fixed", &cfg.fixed},
+                                    std::pair{"reservoir.wetted", &cfg.wetted},
+                                    std::pair{"reservoir.floor", &cfg.floor}})
   {
-    // A facet group has one role.
-    std::map<std::string, std::string> role;
-    for (const auto& [key, groups] :
-         {std::pair{"supports.fixed", &cfg.fixed},
-          std::pair{"reservoir.wetted", &cfg.wetted},
-          std::pair{"reservoir.floor", &cfg.floor}})
+    for (const auto& g : *groups)
     {
-      for (const auto& g : *groups)
-      {
-        if (role.count(g))
-          c.fail(key, "names \"" + g + "\", which " + role[g] + " names too",
-                 "each facet group in one of supports.fixed, "
-                 "reservoir.wetted, reservoir.floor");
-        role[g] = key;
-      }
+      if (role.count(g))
+        c.fail(key, "names \"" + g + "\", which " + role[g] + " names too",
+               "each facet group in one of supports.fixed, "
+               "reservoir.wetted, reservoir.floor");
+      role[g] = key;
     }
   }
-  const std::int64_t flat = geometry::degenerate_cells(mesh.model);
-  if (flat > 0)
-    c.fail("mesh.file",
-           "has " + std::to_string(flat) +
-               " degenerate cells (zero area or volume)",
-           "a mesh without flat or collapsed cells (check it in gmsh: "
-           "Tools > Statistics, quality)");
+}
 
-  // The model's facet tags: the wetted faces and the floor as the forms
-  // expect them.
+/// The model's facet tags: the wetted faces and the floor as the forms
+/// expect them (the groups' own tags kept in cfg.group_facets).
+void tag_for_the_forms(DamModelConfig& cfg)
+{
   std::map<int, int> special;
   for (const auto& g : cfg.wetted)
-    special[mesh.groups.at(g).tag] = geometry::tags::upstream_face;
+    special[cfg.mesh->groups.at(g).tag] = geometry::tags::upstream_face;
   for (const auto& g : cfg.floor)
-    special[mesh.groups.at(g).tag] = geometry::tags::reservoir_floor;
+    special[cfg.mesh->groups.at(g).tag] = geometry::tags::reservoir_floor;
   cfg.group_facets = cfg.mesh->model.facet_tags;
   retag_facets(cfg.mesh->model, special);
+}
 
-  // The dam: crest and base points, the reservoir bottom.
+/// The shared seismic keys with the dam's crest and base as default points,
+/// the concrete, and the reservoir (its bottom: the lowest wetted point;
+/// a level given must be above it).
+void read_dam_seismic(const input::Case& c, DamModelConfig& cfg)
+{
+  const geometry::MeshFile& mesh = *cfg.mesh;
   std::set<int> dam_tags;
   for (const Region& r : cfg.regions)
   {
@@ -673,10 +686,12 @@ DamModelConfig read_dam_model_config(const input::Case& c)
   if (cfg.dim == 2 && !c.string("motion.z.record").empty())
     c.fail("motion.z.record", "is given for a 2D mesh",
            "motion.x (horizontal) and motion.y (vertical) in 2D");
+  if (cfg.dim == 2 && cfg.seismic.motion[2].active)
+    c.fail("motion.z.source", "gives a z motion for a 2D mesh",
+           "motion.x (horizontal) and motion.y (vertical) in 2D");
   cfg.seismic.dam_regions.assign(dam_tags.begin(), dam_tags.end());
+  cfg.seismic.singular_where = "none (a user mesh: raw extremes)";
   read_dam_concrete(c, cfg);
-  // The reservoir: its bottom is the lowest wetted point; a level given
-  // must be above it (levels are elevations in the mesh's coordinates).
   auto& reservoir = cfg.seismic.reservoir;
   if (reservoir.level > 0.0 && cfg.wetted.empty())
     c.fail("reservoir.wetted", "is empty while reservoir.level > 0",
@@ -696,9 +711,17 @@ DamModelConfig read_dam_model_config(const input::Case& c)
              "(0: no reservoir)");
     }
   }
-  if (cfg.dim == 2 && cfg.seismic.motion[2].active)
-    c.fail("motion.z.source", "gives a z motion for a 2D mesh",
-           "motion.x (horizontal) and motion.y (vertical) in 2D");
+  cfg.traction_history_kind = c.string("loads.traction_history");
+  if (!cfg.tractions.empty())
+    cfg.traction_history =
+        load_history(c, cfg.seismic.steps, cfg.seismic.scheme.dt);
+}
+
+/// What is recorded: face tables, the crest and base points, named points
+/// and groups (points within the model).
+void read_recording(const input::Case& c, DamModelConfig& cfg)
+{
+  const geometry::MeshFile& mesh = *cfg.mesh;
   for (const auto& g : cfg.faces)
     cfg.seismic.faces.push_back({g, {mesh.groups.at(g).tag}});
   cfg.seismic.face_tags = cfg.group_facets;
@@ -728,11 +751,17 @@ DamModelConfig read_dam_model_config(const input::Case& c)
              : cfg.group_facets,
          it->second.tag});
   }
-  cfg.seismic.singular_where = "none (a user mesh: raw extremes)";
-  cfg.traction_history_kind = c.string("loads.traction_history");
-  if (!cfg.tractions.empty())
-    cfg.traction_history =
-        load_history(c, cfg.seismic.steps, cfg.seismic.scheme.dt);
+}
+} // namespace
+
+DamModelConfig read_dam_model_config(const input::Case& c)
+{
+  DamModelConfig cfg;
+  read_mesh(c, cfg);
+  read_roles(c, cfg);
+  tag_for_the_forms(cfg);
+  read_dam_seismic(c, cfg);
+  read_recording(c, cfg);
   return cfg;
 }
 
