@@ -1,0 +1,166 @@
+// The Coulomb law of a joint pair (contact/alart_curnier), against
+// independent references:
+//  - the generalised Jacobian blocks B = dF/dp and A = dF/d(g, ds) equal
+//    central finite differences of the residual in each branch (open,
+//    stick, slip; points away from the kinks; 1e-7 relative);
+//  - one pair with an isotropic flexibility W = diag(c_n, c_t, c_t) solved
+//    by the damped semismooth Newton method against the closed-form
+//    Coulomb solution: a free gap stays open with no force; a penetration
+//    delta is closed by P_n = delta / c_n; a small free slip sticks with
+//    P_T = -s_free / c_t; a large one slides with |P_T| = mu P_n opposite
+//    to the slip, the slip |s_free| - c_t mu P_n along the free slip; a
+//    keyed joint never slides; a tangential load turning through 12
+//    directions gives a slip opposite to the force each time (algorithms.md
+//    2.9, test 2). Tolerance 1e-10 (the iteration's tolerance 1e-12 on the
+//    scaled residual).
+#include <cmath>
+#include <damseis/contact/alart_curnier.h>
+#include <gtest/gtest.h>
+#include <random>
+
+namespace
+{
+using namespace damseis::contact;
+using Eigen::Matrix3d;
+using Eigen::Vector2d;
+using Eigen::Vector3d;
+
+/// The residual as a function of x = (P_n, P_a, P_b, g, ds_a, ds_b).
+Vector3d residual(const PairLaw& law, const Eigen::Matrix<double, 6, 1>& x)
+{
+  return alart_curnier(law, x.head<3>(), x[3], x.tail<2>()).F;
+}
+
+TEST(Contact, JacobianMatchesFiniteDifferencesInEveryBranch)
+{
+  std::mt19937 gen(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  PairLaw law;
+  law.mu = 0.8;
+  law.r_n = 2.0;
+  law.r_t = 1.5;
+  int tested[3] = {0, 0, 0};
+  for (int trial = 0; trial < 3000; ++trial)
+  {
+    Eigen::Matrix<double, 6, 1> x;
+    for (int i = 0; i < 6; ++i)
+      x[i] = u(gen);
+    const PairResidual r = alart_curnier(law, x.head<3>(), x[3], x.tail<2>());
+    // Away from the kinks: |sigma_n| and | |tau| - rho | not small.
+    const double sigma_n = x[0] - law.r_n * x[3];
+    const Vector2d tau = x.segment<2>(1) - law.r_t * x.tail<2>();
+    const double rho = law.mu * std::max(sigma_n, 0.0);
+    if (std::abs(sigma_n) < 1e-3 || std::abs(tau.norm() - rho) < 1e-3 ||
+        tau.norm() < 1e-3)
+      continue;
+    Eigen::Matrix<double, 3, 6> fd;
+    const double h = 1e-7;
+    for (int j = 0; j < 6; ++j)
+    {
+      Eigen::Matrix<double, 6, 1> xp = x, xm = x;
+      xp[j] += h;
+      xm[j] -= h;
+      fd.col(j) = (residual(law, xp) - residual(law, xm)) / (2 * h);
+    }
+    Eigen::Matrix<double, 3, 6> J;
+    J << r.B, r.A;
+    EXPECT_LT((J - fd).norm(), 1e-7 * std::max(1.0, J.norm()))
+        << "state " << int(r.state) << "\nJ =\n"
+        << J << "\nFD =\n"
+        << fd;
+    ++tested[int(r.state)];
+  }
+  for (int s = 0; s < 3; ++s)
+    EXPECT_GT(tested[s], 100) << "branch " << s << " barely sampled";
+}
+
+/// An isotropic pair: W = diag(cn, ct, ct).
+Matrix3d flexibility(double cn, double ct)
+{
+  return Vector3d(cn, ct, ct).asDiagonal();
+}
+
+TEST(Contact, PairSolutionsMatchTheClosedForms)
+{
+  const double cn = 2e-9, ct = 5e-9; // m/N
+  PairLaw law;
+  law.mu = 1.0;
+  law.r_n = 1.0 / cn;
+  law.r_t = 1.0 / ct;
+  const Matrix3d W = flexibility(cn, ct);
+  const Vector2d zero2 = Vector2d::Zero();
+  // Free opening: no force.
+  {
+    const auto s = solve_pair(law, W, Vector3d(1e-4, 2e-4, 0), zero2, 0.0);
+    ASSERT_TRUE(s.converged);
+    EXPECT_EQ(s.state, PairState::open);
+    EXPECT_LT(s.p.norm(), 1e-10 * 1e-4 / cn);
+  }
+  // Penetration delta, no tangential load: P_n = delta / cn, gap 0.
+  const double delta = 1e-3;
+  {
+    const auto s = solve_pair(law, W, Vector3d(-delta, 0, 0), zero2, 0.0);
+    ASSERT_TRUE(s.converged);
+    EXPECT_NEAR(s.p[0], delta / cn, 1e-10 * delta / cn);
+    EXPECT_NEAR(s.w[0], 0.0, 1e-10 * delta);
+  }
+  const double Pn = delta / cn;
+  // Stick: a free slip needing |P_T| = 0.5 mu P_n.
+  {
+    const Vector2d s_free = 0.5 * law.mu * Pn * ct * Vector2d(0.6, 0.8);
+    const auto s =
+        solve_pair(law, W, Vector3d(-delta, s_free[0], s_free[1]), zero2, 0.0);
+    ASSERT_TRUE(s.converged);
+    EXPECT_EQ(s.state, PairState::stick);
+    EXPECT_LT((s.p.tail<2>() + s_free / ct).norm(), 1e-10 * Pn);
+    EXPECT_LT(s.w.tail<2>().norm(), 1e-10 * s_free.norm());
+  }
+  // Slip: a free slip needing 3 mu P_n; |P_T| = mu P_n opposite to the
+  // slip, which is |s_free| - ct mu P_n along the free slip.
+  {
+    const Vector2d e(0.6, 0.8);
+    const Vector2d s_free = 3.0 * law.mu * Pn * ct * e;
+    const auto s =
+        solve_pair(law, W, Vector3d(-delta, s_free[0], s_free[1]), zero2, 0.0);
+    ASSERT_TRUE(s.converged);
+    EXPECT_EQ(s.state, PairState::slip);
+    EXPECT_NEAR(s.p[0], Pn, 1e-10 * Pn);
+    EXPECT_LT((s.p.tail<2>() + law.mu * Pn * e).norm(), 1e-10 * Pn);
+    const Vector2d slip = s.w.tail<2>();
+    EXPECT_LT((slip - (s_free.norm() - ct * law.mu * Pn) * e).norm(),
+              1e-10 * s_free.norm());
+    // A keyed joint does not slide, whatever the load.
+    PairLaw keyed = law;
+    keyed.keyed = true;
+    const auto k = solve_pair(keyed, W, Vector3d(-delta, s_free[0], s_free[1]),
+                              zero2, 0.0);
+    ASSERT_TRUE(k.converged);
+    EXPECT_LT(k.w.tail<2>().norm(), 1e-10 * s_free.norm());
+    EXPECT_LT((k.p.tail<2>() + s_free / ct).norm(), 1e-10 * s_free.norm() / ct);
+  }
+  // A tangential load turning through 12 directions, from the last state
+  // (the slip measured from the last step's tangential displacement): the
+  // slip is opposite to the force each time.
+  {
+    Vector3d p = Vector3d::Zero();
+    Vector2d wT_old = Vector2d::Zero();
+    for (int k = 0; k < 12; ++k)
+    {
+      const double a = 2 * M_PI * k / 12;
+      const Vector2d load = 2.0 * law.mu * Pn * ct * Vector2d(cos(a), sin(a));
+      const Vector2d free = wT_old + load;
+      const auto s = solve_pair(law, W, Vector3d(-delta, free[0], free[1]),
+                                wT_old, 0.0, p);
+      ASSERT_TRUE(s.converged) << "direction " << k;
+      const Vector2d slip = s.w.tail<2>() - wT_old;
+      const Vector2d PT = s.p.tail<2>();
+      EXPECT_EQ(s.state, PairState::slip) << "direction " << k;
+      EXPECT_NEAR(PT.norm(), law.mu * s.p[0], 1e-10 * Pn);
+      EXPECT_NEAR(slip.normalized().dot(PT.normalized()), -1.0, 1e-10)
+          << "direction " << k;
+      p = s.p;
+      wT_old = s.w.tail<2>();
+    }
+  }
+}
+} // namespace
