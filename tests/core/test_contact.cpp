@@ -12,9 +12,18 @@
 //    keyed joint never slides; a tangential load turning through 12
 //    directions gives a slip opposite to the force each time (algorithms.md
 //    2.9, test 2). Tolerance 1e-10 (the iteration's tolerance 1e-12 on the
-//    scaled residual).
+//    scaled residual);
+//  - the condensed problem of many pairs (contact/ncp): uncoupled pairs
+//    give the single-pair solutions (1e-10); the assembled Jacobian J = B +
+//    A W equals central differences of the residual through W (1e-6);
+//    without friction the normal forces equal the solution of the linear
+//    complementarity problem found by enumerating every active set
+//    (1e-9); with friction and a coupled W every pair meets the Coulomb
+//    conditions themselves (no penetration, no tension, complementarity,
+//    |P_T| <= mu P_n, no slip below it, slip opposite to P_T at it).
 #include <cmath>
 #include <damseis/contact/alart_curnier.h>
+#include <damseis/contact/ncp.h>
 #include <gtest/gtest.h>
 #include <random>
 
@@ -162,5 +171,196 @@ TEST(Contact, PairSolutionsMatchTheClosedForms)
       wT_old = s.w.tail<2>();
     }
   }
+}
+
+/// A random symmetric positive definite flexibility of n pairs, coupled,
+/// with diagonal about `c`.
+Eigen::MatrixXd random_flexibility(int n, double c, std::mt19937& gen)
+{
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Eigen::MatrixXd R(3 * n, 3 * n);
+  for (int i = 0; i < 3 * n; ++i)
+    for (int j = 0; j < 3 * n; ++j)
+      R(i, j) = u(gen);
+  Eigen::MatrixXd W = 0.1 * c * R * R.transpose() / (3 * n);
+  W.diagonal().array() += c;
+  return W;
+}
+
+ContactProblem random_problem(int n, double mu, std::mt19937& gen)
+{
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const double c = 1e-9;
+  ContactProblem pb;
+  pb.W = random_flexibility(n, c, gen);
+  pb.w_free.resize(3 * n);
+  pb.wT_old = Eigen::VectorXd::Zero(2 * n);
+  pb.g0 = Eigen::VectorXd::Zero(n);
+  for (int i = 0; i < 3 * n; ++i)
+    pb.w_free[i] = 1e-3 * u(gen);
+  for (int i = 0; i < n; ++i)
+  {
+    PairLaw law;
+    law.mu = mu;
+    law.r_n = 1.0 / pb.W(3 * i, 3 * i);
+    law.r_t = 1.0 / pb.W(3 * i + 1, 3 * i + 1);
+    pb.laws.push_back(law);
+  }
+  return pb;
+}
+
+TEST(ContactNcp, UncoupledPairsGiveTheSinglePairSolutions)
+{
+  std::mt19937 gen(11);
+  ContactProblem pb = random_problem(6, 0.7, gen);
+  // Block-diagonal W: every pair alone.
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j)
+      if (i != j)
+        pb.W.block<3, 3>(3 * i, 3 * j).setZero();
+  const NcpReport r = solve_ncp(pb, Eigen::VectorXd::Zero(18));
+  ASSERT_TRUE(r.converged);
+  for (int i = 0; i < 6; ++i)
+  {
+    const auto s =
+        solve_pair(pb.laws[i], pb.W.block<3, 3>(3 * i, 3 * i),
+                   pb.w_free.segment<3>(3 * i), Vector2d::Zero(), 0.0);
+    ASSERT_TRUE(s.converged);
+    EXPECT_LT((r.p.segment<3>(3 * i) - s.p).norm(),
+              1e-10 * std::max(1.0, s.p.norm()))
+        << "pair " << i;
+  }
+}
+
+TEST(ContactNcp, JacobianMatchesFiniteDifferences)
+{
+  std::mt19937 gen(5);
+  const ContactProblem pb = random_problem(5, 0.8, gen);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int checked = 0;
+  for (int trial = 0; trial < 20; ++trial)
+  {
+    Eigen::VectorXd p(15);
+    for (int i = 0; i < 15; ++i)
+      p[i] = 1e6 * u(gen);
+    Eigen::VectorXd w;
+    std::vector<PairState> st;
+    Eigen::MatrixXd J;
+    contact_residual(pb, p, w, st, &J);
+    const double h = 1e-3; // N, on forces of 1e6 N
+    Eigen::MatrixXd fd(15, 15);
+    bool kink = false;
+    for (int j = 0; j < 15; ++j)
+    {
+      Eigen::VectorXd pp = p, pm = p;
+      pp[j] += h;
+      pm[j] -= h;
+      std::vector<PairState> sp, sm;
+      Eigen::VectorXd wp, wm;
+      fd.col(j) = (contact_residual(pb, pp, wp, sp) -
+                   contact_residual(pb, pm, wm, sm)) /
+                  (2 * h);
+      kink = kink || sp != st || sm != st;
+    }
+    if (kink)
+      continue;
+    EXPECT_LT((J - fd).norm(), 1e-6 * J.norm());
+    ++checked;
+  }
+  EXPECT_GT(checked, 10);
+}
+
+TEST(ContactNcp, FrictionlessNormalForcesSolveTheLcp)
+{
+  std::mt19937 gen(3);
+  for (int trial = 0; trial < 20; ++trial)
+  {
+    const int n = 4;
+    const ContactProblem pb = random_problem(n, 0.0, gen);
+    const NcpReport r = solve_ncp(pb, Eigen::VectorXd::Zero(3 * n));
+    ASSERT_TRUE(r.converged) << "trial " << trial;
+    // Frictionless: P_T = 0, and the normal forces solve the LCP
+    // p >= 0, w_n = w_free_n + Wnn p >= 0, p . w_n = 0 (enumerated).
+    Eigen::MatrixXd Wnn(n, n);
+    Eigen::VectorXd q(n);
+    for (int i = 0; i < n; ++i)
+    {
+      q[i] = pb.w_free[3 * i];
+      for (int j = 0; j < n; ++j)
+        Wnn(i, j) = pb.W(3 * i, 3 * j);
+    }
+    int solutions = 0;
+    Eigen::VectorXd ref(n);
+    for (int set = 0; set < (1 << n); ++set)
+    {
+      std::vector<int> act;
+      for (int i = 0; i < n; ++i)
+        if (set & (1 << i))
+          act.push_back(i);
+      Eigen::VectorXd pn = Eigen::VectorXd::Zero(n);
+      if (!act.empty())
+      {
+        Eigen::MatrixXd A(act.size(), act.size());
+        Eigen::VectorXd b(act.size());
+        for (std::size_t a = 0; a < act.size(); ++a)
+        {
+          b[a] = -q[act[a]];
+          for (std::size_t c = 0; c < act.size(); ++c)
+            A(a, c) = Wnn(act[a], act[c]);
+        }
+        const Eigen::VectorXd x = A.ldlt().solve(b);
+        for (std::size_t a = 0; a < act.size(); ++a)
+          pn[act[a]] = x[a];
+      }
+      const Eigen::VectorXd wn = q + Wnn * pn;
+      if ((pn.array() >= -1e-12 * pn.norm()).all() &&
+          (wn.array() >= -1e-15).all())
+      {
+        ++solutions;
+        ref = pn;
+      }
+    }
+    ASSERT_EQ(solutions, 1) << "trial " << trial;
+    for (int i = 0; i < n; ++i)
+    {
+      EXPECT_NEAR(r.p[3 * i], ref[i], 1e-9 * std::max(1.0, ref.norm()));
+      EXPECT_LT(r.p.segment<2>(3 * i + 1).norm(),
+                1e-9 * std::max(1.0, ref.norm()));
+    }
+  }
+}
+
+TEST(ContactNcp, FrictionalSolutionsMeetTheCoulombConditions)
+{
+  std::mt19937 gen(17);
+  int states[3] = {0, 0, 0};
+  for (int trial = 0; trial < 30; ++trial)
+  {
+    const int n = 6;
+    const ContactProblem pb = random_problem(n, 0.6, gen);
+    const NcpReport r = solve_ncp(pb, Eigen::VectorXd::Zero(3 * n));
+    ASSERT_TRUE(r.converged)
+        << "trial " << trial << ", iterations " << r.iterations;
+    const double P = std::max(1.0, r.p.lpNorm<Eigen::Infinity>());
+    const double G = 1e-3; // displacement scale of w_free
+    for (int i = 0; i < n; ++i)
+    {
+      const double Pn = r.p[3 * i], g = r.w[3 * i];
+      const Vector2d PT = r.p.segment<2>(3 * i + 1);
+      const Vector2d slip = r.w.segment<2>(3 * i + 1); // wT_old = 0
+      EXPECT_GE(Pn, -1e-9 * P);
+      EXPECT_GE(g, -1e-9 * G);
+      EXPECT_LT(std::abs(Pn * g), 1e-9 * P * G);
+      EXPECT_LE(PT.norm(), pb.laws[i].mu * Pn + 1e-9 * P);
+      if (PT.norm() < pb.laws[i].mu * Pn - 1e-6 * P)
+        EXPECT_LT(slip.norm(), 1e-9 * G) << "stick pair " << i;
+      else if (slip.norm() > 1e-9 * G && Pn > 1e-9 * P)
+        EXPECT_NEAR(slip.normalized().dot(PT.normalized()), -1.0, 1e-8)
+            << "slip pair " << i;
+      ++states[int(r.states[i])];
+    }
+  }
+  for (int s = 0; s < 3; ++s)
+    EXPECT_GT(states[s], 5) << "state " << s << " barely met";
 }
 } // namespace

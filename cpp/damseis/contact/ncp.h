@@ -1,0 +1,50 @@
+// The contact problem of all pairs of the active joints, condensed onto
+// the pair forces (algorithms.md 2.2): w = w_free + W p, W the pairs'
+// dense flexibility. Solved as a nonlinear complementarity problem in the
+// Alart-Curnier form (alart_curnier.h) by a damped semismooth Newton method
+// (algorithms.md 2.5).
+#pragma once
+
+#include "alart_curnier.h"
+#include <vector>
+
+namespace damseis::contact
+{
+struct ContactProblem
+{
+  std::vector<PairLaw> laws; ///< one per pair
+  Eigen::MatrixXd W;         ///< 3n x 3n, symmetric positive definite
+  Eigen::VectorXd w_free;    ///< 3n: (w_n, w_a, w_b) per pair without force
+  Eigen::VectorXd wT_old;    ///< 2n: the tangential w of the last step
+  Eigen::VectorXd g0;        ///< n: initial gaps (0: closed joints)
+};
+
+struct NcpSettings
+{
+  double tol = 1e-10;      ///< |F| <= tol * force scale
+  int max_iterations = 50; ///< Newton iterations
+};
+
+struct NcpReport
+{
+  Eigen::VectorXd p, w; ///< pair forces and relative displacements (3n)
+  std::vector<PairState> states;
+  int iterations = 0;        ///< Newton iterations
+  int line_search_steps = 0; ///< step halvings
+  int gradient_steps = 0;    ///< fallbacks to the gradient direction
+  bool converged = false;
+  double residual = 0.0; ///< |F| / force scale at the end
+};
+
+/// The residual of all pairs at the forces p (3n), with the relative
+/// displacement w = w_free + W p, and the generalised Jacobian J = B + A W
+/// (dense) if `J` is not null.
+Eigen::VectorXd contact_residual(const ContactProblem& c,
+                                 const Eigen::VectorXd& p, Eigen::VectorXd& w,
+                                 std::vector<PairState>& states,
+                                 Eigen::MatrixXd* J = nullptr);
+
+/// Solves the contact problem from p0 (warm start: the last step's forces).
+NcpReport solve_ncp(const ContactProblem& c, const Eigen::VectorXd& p0,
+                    const NcpSettings& s = {});
+} // namespace damseis::contact
