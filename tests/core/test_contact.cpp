@@ -20,9 +20,15 @@
 //    complementarity problem found by enumerating every active set
 //    (1e-9); with friction and a coupled W every pair meets the Coulomb
 //    conditions themselves (no penetration, no tension, complementarity,
-//    |P_T| <= mu P_n, no slip below it, slip opposite to P_T at it).
+//    |P_T| <= mu P_n, no slip below it, slip opposite to P_T at it);
+//  - the impact correction (contact/impact) keeps the normal momentum
+//    (round-off), keeps the kinetic energy with e = 1 and leaves the nodes
+//    moving together with e = 0 (the inelastic collision of two masses:
+//    energy loss m_a m_b v_rel^2 / (2 (m_a + m_b))), and leaves separating
+//    nodes alone.
 #include <cmath>
 #include <damseis/contact/alart_curnier.h>
+#include <damseis/contact/impact.h>
 #include <damseis/contact/ncp.h>
 #include <gtest/gtest.h>
 #include <random>
@@ -362,5 +368,40 @@ TEST(ContactNcp, FrictionalSolutionsMeetTheCoulombConditions)
   }
   for (int s = 0; s < 3; ++s)
     EXPECT_GT(states[s], 5) << "state " << s << " barely met";
+}
+
+TEST(ContactImpact, MomentumKeptEnergyByRestitution)
+{
+  std::mt19937 gen(23);
+  std::uniform_real_distribution<double> m(10.0, 1000.0), v(-2.0, 2.0);
+  for (int trial = 0; trial < 100; ++trial)
+  {
+    const double ma = m(gen), mb = m(gen);
+    NormalVelocities in{v(gen), v(gen)};
+    if (in.b - in.a >= 0.0)
+      std::swap(in.a, in.b); // approaching
+    const double momentum = ma * in.a + mb * in.b;
+    const double energy = 0.5 * (ma * in.a * in.a + mb * in.b * in.b);
+    const double rel = in.b - in.a;
+    const auto elastic = impact(ma, mb, in, 1.0);
+    EXPECT_NEAR(ma * elastic.a + mb * elastic.b, momentum,
+                1e-12 * (ma + mb) * 2.0);
+    EXPECT_NEAR(0.5 * (ma * elastic.a * elastic.a + mb * elastic.b * elastic.b),
+                energy, 1e-12 * (ma + mb) * 4.0);
+    EXPECT_NEAR(elastic.b - elastic.a, -rel, 1e-12);
+    const auto plastic = impact(ma, mb, in, 0.0);
+    EXPECT_NEAR(ma * plastic.a + mb * plastic.b, momentum,
+                1e-12 * (ma + mb) * 2.0);
+    EXPECT_NEAR(plastic.b, plastic.a, 1e-12);
+    EXPECT_NEAR(energy - 0.5 * (ma * plastic.a * plastic.a +
+                                mb * plastic.b * plastic.b),
+                ma * mb * rel * rel / (2.0 * (ma + mb)),
+                1e-10 * (ma + mb) * 4.0);
+    // Separating nodes: unchanged.
+    const NormalVelocities out{in.b, in.a};
+    const auto same = impact(ma, mb, out, 1.0);
+    EXPECT_EQ(same.a, out.a);
+    EXPECT_EQ(same.b, out.b);
+  }
 }
 } // namespace
