@@ -13,6 +13,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <damseis/results/progress.h>
 #include <fcntl.h>
 #include <fstream>
 #include <mpi.h>
@@ -171,6 +172,8 @@ int main(int argc, char** argv)
   // initialised, and stdout (the warnings) goes to /dev/null; reports go to
   // stderr.
   MPI_Init(&argc, &argv);
+  // DOLFINx's INFO lines (meshes read by the dam_model target) off.
+  damseis::results::quiet_library_logging();
   const fs::path scratch =
       fs::temp_directory_path() / ("damseis_fuzz." + std::to_string(getpid()));
   int status = 0;

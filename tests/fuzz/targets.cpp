@@ -2,6 +2,7 @@
 #include "mutator.h"
 #include <cmath>
 #include <damseis/analysis/arch_dam_case.h>
+#include <damseis/analysis/dam_model_case.h>
 #include <damseis/analysis/gravity_dam_case.h>
 #include <damseis/checkpoint/checkpoint_file.h>
 #include <damseis/material/material_point_case.h>
@@ -323,6 +324,21 @@ std::vector<Target> all_targets(const fs::path& source_dir,
       "case_arch", analysis::arch_dam_schema(), arch_seeds,
       analysis::read_arch_dam_config, scratch,
       [](const analysis::ArchDamConfig& a) { check_motion(a.seismic); }));
+  // dam_model: the case and the mesh it names (the examples' meshes are
+  // reachable from the scratch case as from the demo's folder).
+  fs::create_directory_symlink(demos / "dam_model" / "meshes",
+                               scratch / "cases" / "case" / "meshes", ec);
+  targets.push_back(case_target<analysis::DamModelConfig>(
+      "case_dam_model", analysis::dam_model_schema(),
+      files_in(demos / "dam_model", ".toml"), analysis::read_dam_model_config,
+      scratch,
+      [](const analysis::DamModelConfig& d)
+      {
+        check_motion(d.seismic);
+        for (const auto& r : d.regions)
+          check_finite(r.material.E, "region E");
+        check_all_finite(d.traction_history, "traction history");
+      }));
   targets.push_back(case_target<material::MaterialPointConfig>(
       "case_material_point", material::material_point_schema(),
       files_in(demos / "material_point", ".toml"),
