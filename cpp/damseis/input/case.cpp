@@ -328,6 +328,24 @@ std::string expected_text(const Key& key)
   return text;
 }
 
+/// The elements of a TOML array of one type (`as(element)`: the typed
+/// node, or null for another type), or the problem with the first other
+/// element.
+template <typename T, typename As, typename Wrong>
+std::variant<Value, std::string> array_of(const toml::array& a, As as,
+                                          const Wrong& wrong)
+{
+  std::vector<T> values;
+  for (const toml::node& element : a)
+  {
+    if (const auto* v = as(element))
+      values.push_back(v->get());
+    else
+      return wrong("has an element that is " + node_type_text(element));
+  }
+  return Value(std::move(values));
+}
+
 /// Converts a TOML node to the value of `key`. On failure returns the
 /// problem, e.g. "is a float; expected an integer".
 std::variant<Value, std::string> convert(const Key& key, const toml::node& node)
@@ -386,31 +404,13 @@ std::variant<Value, std::string> convert(const Key& key, const toml::node& node)
     break;
   case Type::integer_array:
     if (const auto* a = node.as_array())
-    {
-      std::vector<std::int64_t> values;
-      for (const toml::node& element : *a)
-      {
-        if (const auto* i = element.as_integer())
-          values.push_back(i->get());
-        else
-          return wrong("has an element that is " + node_type_text(element));
-      }
-      return Value(std::move(values));
-    }
+      return array_of<std::int64_t>(
+          *a, [](const toml::node& e) { return e.as_integer(); }, wrong);
     break;
   case Type::string_array:
     if (const auto* a = node.as_array())
-    {
-      std::vector<std::string> values;
-      for (const toml::node& element : *a)
-      {
-        if (const auto* t = element.as_string())
-          values.push_back(t->get());
-        else
-          return wrong("has an element that is " + node_type_text(element));
-      }
-      return Value(std::move(values));
-    }
+      return array_of<std::string>(
+          *a, [](const toml::node& e) { return e.as_string(); }, wrong);
     break;
   }
   return wrong("is " + node_type_text(node));
