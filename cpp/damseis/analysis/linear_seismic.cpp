@@ -5,6 +5,7 @@
 #include "modal_stage.h"
 #include "recorders.h"
 #include "run_outputs.h"
+#include "seismic_system.h"
 #include "timed_loads.h"
 #include <chrono>
 #include <cmath>
@@ -94,35 +95,14 @@ LinearSeismicAnalysis::LinearSeismicAnalysis(fem::ElasticModel& fe,
 {
   results::set_stage("assembly");
   print_model_line(fe, "");
-  const bool wet = s.reservoir.depth() > 0.0;
-  _added = s.westergaard && wet ? &s.reservoir : nullptr;
-  // The system: all dofs, or the tied unknowns u_r with u = P u_r.
-  _K = Matrix(fe.assemble_stiffness(), false);
-  _M = Matrix(fe.assemble_mass(_added), false);
-  if (tie)
-  {
-    _K = Matrix(fem::reduce_to_tied(_K.mat(), tie), false);
-    _M = Matrix(fem::reduce_to_tied(_M.mat(), tie), false);
-  }
-
-  // The static load: dead weight, hydrostatic pressure, the extra loads.
-  std::array<double, 3> g = {0, 0, 0};
-  g[fe.dim() - 1] = -s.gravity;
-  Vector F_full(fe.assemble_gravity(g), false);
-  if (wet)
-  {
-    Vector H(fe.assemble_hydrostatic(s.reservoir), false);
-    VecAXPY(F_full.vec(), 1.0, H.vec());
-  }
-  for (Vec extra : loads.static_loads)
-    VecAXPY(F_full.vec(), 1.0, extra);
-  if (tie)
-  {
-    _F = linalg::column_vector(tie);
-    MatMultTranspose(tie, F_full.vec(), _F.vec());
-  }
-  else
-    _F = std::move(F_full);
+  // The system (all dofs, or the tied unknowns u_r with u = P u_r) and the
+  // static load: dead weight, hydrostatic pressure, the extra loads.
+  SeismicSystem sys =
+      assemble_seismic_system(fe, s, loads.static_loads, tie, false);
+  _added = sys.added;
+  _K = std::move(sys.K);
+  _M = std::move(sys.M);
+  _F = std::move(sys.F_static);
   _u_static = linalg::column_vector(_K.mat());
   _static_seconds = seconds_since(_wall_start);
 }
@@ -130,13 +110,7 @@ LinearSeismicAnalysis::LinearSeismicAnalysis(fem::ElasticModel& fe,
 void LinearSeismicAnalysis::modal_stage()
 {
   results::set_stage("static stage and modal analysis");
-  Matrix M0(nullptr, false);
-  if (_added)
-  {
-    M0 = Matrix(_fe.assemble_mass(nullptr), false);
-    if (_tie)
-      M0 = Matrix(fem::reduce_to_tied(M0.mat(), _tie), false);
-  }
+  Matrix M0 = dry_mass(_fe, _added, _tie);
   // K u = F is solved with the modal analysis' factors of K.
   _modal = modal_and_damping(
       _K.mat(), _M.mat(), _added ? M0.mat() : nullptr, _s,
@@ -173,11 +147,7 @@ void LinearSeismicAnalysis::time_history()
   const LoadWithTimedTerms load(ground, _loads.timed, _tie);
 
   // Outputs: every input check has passed by now.
-  std::filesystem::create_directories(_folder.dir);
-  int rank = 0;
-  MPI_Comm_rank(_comm, &rank);
-  if (rank == 0)
-    std::ofstream(_folder.dir / "case_used.toml") << _folder.case_text;
+  open_run_folder(_comm, _folder);
   _u = std::make_unique<FullDisplacement>(*_stepper, _tie);
   write_modes(
       _fe, _modal->modes, [&](Vec x) { return _u->full(x); },

@@ -7,6 +7,7 @@
 #include "modal_stage.h"
 #include "recorders.h"
 #include "run_outputs.h"
+#include "seismic_system.h"
 #include "static_stage.h"
 #include "tied_concrete_system.h"
 #include "timed_loads.h"
@@ -359,8 +360,6 @@ public:
 private:
   void add_recorders(engine::TimeHistory& history);
   void write_concrete_outputs(json& summary) const;
-  /// The load on the system's unknowns of a full-space load.
-  Vector system_load(Vec f) const;
 
   fem::ElasticModel& _fe;
   const SeismicSettings& _s;
@@ -421,64 +420,32 @@ ConcreteSeismicAnalysis::ConcreteSeismicAnalysis(fem::ElasticModel& fe,
   results::set_stage("assembly");
   const ConcreteSettings& concrete = _bulk.concrete;
   print_model_line(fe, ", concrete " + to_string(concrete.kind));
-  const bool wet = s.reservoir.depth() > 0.0;
-  _added = s.westergaard && wet ? &s.reservoir : nullptr;
-  _K = Matrix(fe.assemble_stiffness(), false);
-  _M = Matrix(fe.assemble_mass(_added), false);
+  // The system (on the tied unknowns with ties, the full K kept for the
+  // tangent changes) and the static loads: the dead weight, then the
+  // reservoir (and silt, uplift).
+  SeismicSystem sys =
+      assemble_seismic_system(fe, s, loads.static_loads, tie, true);
+  _added = sys.added;
+  _K = std::move(sys.K);
+  _M = std::move(sys.M);
+  _K_full = std::move(sys.K_full);
+  _F_g = std::move(sys.F_g);
+  _F_static = std::move(sys.F_static);
   if (tie)
-  {
-    // The system on the tied unknowns: P^T K P, P^T M P, P^T F.
-    _K_full = std::move(_K);
-    _K = Matrix(fem::reduce_to_tied(_K_full.mat(), tie), false);
-    _M = Matrix(fem::reduce_to_tied(_M.mat(), tie), false);
     _system = std::make_unique<TiedConcreteSystem>(_cm, tie, _K_full.mat());
-  }
   else
     _system = std::make_unique<ConcreteSystem>(_cm);
   _plastic = concrete.kind != ConcreteModelKind::elastic;
   _cm.set_implex(concrete.implex && _plastic);
   if (_plastic)
     print_crack_band_notes(_comm, fe, _cm, concrete, _bulk.regions);
-
-  // The static loads: dead weight, then the reservoir (and silt, uplift).
-  std::array<double, 3> g = {0, 0, 0};
-  g[fe.dim() - 1] = -s.gravity;
-  Vector F_g(fe.assemble_gravity(g), false);
-  Vector F_static =
-      linalg::row_vector(_K_full.mat() ? _K_full.mat() : _K.mat());
-  VecCopy(F_g.vec(), F_static.vec());
-  if (wet)
-  {
-    Vector H(fe.assemble_hydrostatic(s.reservoir), false);
-    VecAXPY(F_static.vec(), 1.0, H.vec());
-  }
-  for (Vec extra : loads.static_loads)
-    VecAXPY(F_static.vec(), 1.0, extra);
-  _F_g = system_load(F_g.vec());
-  _F_static = system_load(F_static.vec());
-}
-
-Vector ConcreteSeismicAnalysis::system_load(Vec f) const
-{
-  Vector y = linalg::column_vector(_K.mat());
-  if (_tie)
-    MatMultTranspose(_tie, f, y.vec());
-  else
-    VecCopy(f, y.vec());
-  return y;
 }
 
 void ConcreteSeismicAnalysis::modal_stage()
 {
   // The initial elastic system; Rayleigh damping with K0.
   results::set_stage("modal analysis");
-  Matrix M0(nullptr, false);
-  if (_added)
-  {
-    M0 = Matrix(_fe.assemble_mass(nullptr), false);
-    if (_tie)
-      M0 = Matrix(fem::reduce_to_tied(M0.mat(), _tie), false);
-  }
+  Matrix M0 = dry_mass(_fe, _added, _tie);
   _modal =
       modal_and_damping(_K.mat(), _M.mat(), _added ? M0.mat() : nullptr, _s);
 }
@@ -533,21 +500,10 @@ void ConcreteSeismicAnalysis::time_history()
   // Tractions with their histories on top of the ground motion's load.
   const LoadWithTimedTerms load(ground, _loads.timed, _tie);
 
-  std::filesystem::create_directories(_folder.dir);
-  int rank = 0;
-  MPI_Comm_rank(_comm, &rank);
-  if (rank == 0)
-    std::ofstream(_folder.dir / "case_used.toml") << _folder.case_text;
-  Vector mode_full = linalg::row_vector(_tie ? _tie : _K.mat());
+  open_run_folder(_comm, _folder);
+  _u = std::make_unique<FullDisplacement>(*_stepper, _tie);
   write_modes(
-      _fe, _modal->modes,
-      [&](Vec x)
-      {
-        if (!_tie)
-          return x;
-        MatMult(_tie, x, mode_full.vec());
-        return mode_full.vec();
-      },
+      _fe, _modal->modes, [&](Vec x) { return _u->full(x); },
       _folder.dir / "modes.xdmf");
 
   engine::TimeHistory history(
@@ -581,7 +537,6 @@ void ConcreteSeismicAnalysis::add_recorders(engine::TimeHistory& history)
         _in_dam[d] = 1;
     }
   }
-  _u = std::make_unique<FullDisplacement>(*_stepper, _tie);
   // The stresses (seismic: less the static ones, unless total asked).
   _s_field.resize(_cm.stress().size());
   _stresses = std::make_unique<StressRecorder>(
