@@ -3,6 +3,7 @@
 #include "run_outputs.h"
 #include <damseis/fem/group_loads.h>
 #include <damseis/fem/tied_dofs.h>
+#include <damseis/geometry/tagged.h>
 #include <damseis/results/progress.h>
 #include <dolfinx/common/IndexMap.h>
 #include <dolfinx/fem/DirichletBC.h>
@@ -15,19 +16,6 @@ namespace damseis::analysis
 namespace
 {
 using dolfinx::la::petsc::Vector;
-
-/// The local facets (owned and ghost) with this tag.
-std::vector<std::int32_t>
-tagged_facets(const dolfinx::mesh::MeshTags<std::int32_t>& t, int tag)
-{
-  std::vector<std::int32_t> facets;
-  for (std::size_t i = 0; i < t.indices().size(); ++i)
-  {
-    if (t.values()[i] == tag)
-      facets.push_back(t.indices()[i]);
-  }
-  return facets;
-}
 
 /// The initial velocity: per group the value at the nodes of its cells
 /// (the later group wins on shared nodes), zero at fixed dofs. A node is
@@ -136,7 +124,8 @@ DamModel dam_model(MPI_Comm comm, const DamModelConfig& cfg)
     m.tractions.emplace_back(
         fem::assemble_traction(
             *m.fe,
-            tagged_facets(*cfg.group_facets, cfg.mesh->groups.at(t.group).tag),
+            geometry::tagged_entities(*cfg.group_facets,
+                                      {cfg.mesh->groups.at(t.group).tag}),
             t.value),
         false);
   }

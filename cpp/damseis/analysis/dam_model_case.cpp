@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <damseis/geometry/mesh_checks.h>
+#include <damseis/geometry/tagged.h>
 #include <damseis/geometry/tags.h>
 #include <damseis/motion/record.h>
 #include <dolfinx/common/IndexMap.h>
@@ -131,13 +132,8 @@ extreme_vertices(const geometry::Model& model, const std::set<int>& regions)
 {
   const auto& mesh = *model.mesh;
   const int tdim = mesh.topology().dim();
-  const auto& t = *model.cell_tags;
-  std::vector<std::int32_t> cells;
-  for (std::size_t i = 0; i < t.indices().size(); ++i)
-  {
-    if (regions.count(t.values()[i]))
-      cells.push_back(t.indices()[i]);
-  }
+  const auto cells = geometry::tagged_entities(
+      *model.cell_tags, std::vector<int>(regions.begin(), regions.end()));
   const auto nodes =
       dolfinx::mesh::entities_to_geometry(mesh, tdim, cells, false);
   const auto& x = mesh.geometry().x();
@@ -178,13 +174,8 @@ double lowest_facet_point(const geometry::Model& model,
 {
   const auto& mesh = *model.mesh;
   const int tdim = mesh.topology().dim();
-  const auto& t = *model.facet_tags;
-  std::vector<std::int32_t> facets;
-  for (std::size_t i = 0; i < t.indices().size(); ++i)
-  {
-    if (tags.count(t.values()[i]))
-      facets.push_back(t.indices()[i]);
-  }
+  const auto facets = geometry::tagged_entities(
+      *model.facet_tags, std::vector<int>(tags.begin(), tags.end()));
   const auto nodes =
       dolfinx::mesh::entities_to_geometry(mesh, tdim - 1, facets, false);
   double z = HUGE_VAL;

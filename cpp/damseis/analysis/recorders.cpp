@@ -1,5 +1,6 @@
 #include "recorders.h"
 #include <damseis/engine/checkpoint.h>
+#include <damseis/geometry/tagged.h>
 #include <damseis/linalg/petsc_vectors.h>
 #include <dolfinx/fem/utils.h>
 #include <fstream>
@@ -364,10 +365,7 @@ GroupStates::GroupStates(
   const std::int32_t owned = V.dofmap()->index_map->size_local();
   for (const auto& g : groups)
   {
-    std::vector<std::int32_t> entities;
-    for (std::size_t i = 0; i < g.tags->indices().size(); ++i)
-      if (g.tags->values()[i] == g.tag)
-        entities.push_back(g.tags->indices()[i]);
+    const auto entities = geometry::tagged_entities(*g.tags, {g.tag});
     auto blocks =
         dolfinx::fem::locate_dofs_topological(V, g.tags->dim(), entities, true);
     std::erase_if(blocks, [owned](std::int32_t b) { return b >= owned; });

@@ -2,6 +2,7 @@
 #include <chrono>
 #include <cmath>
 #include <damseis/geometry/mesh_estimate.h>
+#include <damseis/geometry/tagged.h>
 #include <damseis/results/gather.h>
 #include <damseis/results/progress.h>
 #include <damseis/results/singular_points.h>
@@ -44,15 +45,7 @@ std::vector<std::int32_t> region_cells(const geometry::Model& m, int region)
 std::vector<std::int32_t> region_cells(const geometry::Model& m,
                                        const std::vector<int>& regions)
 {
-  std::vector<std::int32_t> cells;
-  const auto& tags = *m.cell_tags;
-  for (std::size_t i = 0; i < tags.indices().size(); ++i)
-  {
-    if (std::find(regions.begin(), regions.end(), tags.values()[i]) !=
-        regions.end())
-      cells.push_back(tags.indices()[i]);
-  }
-  return cells;
+  return geometry::tagged_entities(*m.cell_tags, regions);
 }
 
 double seconds_since(std::chrono::steady_clock::time_point t0)

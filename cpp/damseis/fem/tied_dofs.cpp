@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <damseis/geometry/tagged.h>
 #include <dolfinx/common/IndexMap.h>
 #include <dolfinx/fem/DirichletBC.h>
 #include <dolfinx/fem/DofMap.h>
@@ -19,12 +20,7 @@ owned_blocks_on(const dolfinx::fem::FunctionSpace& V,
                 const dolfinx::mesh::MeshTags<std::int32_t>& facet_tags,
                 int tag)
 {
-  std::vector<std::int32_t> facets;
-  for (std::size_t i = 0; i < facet_tags.indices().size(); ++i)
-  {
-    if (facet_tags.values()[i] == tag)
-      facets.push_back(facet_tags.indices()[i]);
-  }
+  const auto facets = geometry::tagged_entities(facet_tags, {tag});
   const int tdim = V.mesh()->topology().dim();
   auto blocks =
       dolfinx::fem::locate_dofs_topological(V, tdim - 1, facets, true);

@@ -1,4 +1,5 @@
 #include "mesh_checks.h"
+#include "tagged.h"
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -46,13 +47,8 @@ SideFacets side_facets(const Model& model, int tag)
   const auto& mesh = *model.mesh;
   const int tdim = mesh.topology().dim();
   const std::int32_t owned = mesh.topology().index_map(tdim - 1)->size_local();
-  std::vector<std::int32_t> facets;
-  const auto& t = *model.facet_tags;
-  for (std::size_t i = 0; i < t.indices().size(); ++i)
-  {
-    if (t.values()[i] == tag && t.indices()[i] < owned)
-      facets.push_back(t.indices()[i]);
-  }
+  std::vector<std::int32_t> facets = tagged_entities(*model.facet_tags, {tag});
+  std::erase_if(facets, [owned](std::int32_t f) { return f >= owned; });
   const std::vector<std::int32_t> nodes =
       dolfinx::mesh::entities_to_geometry(mesh, tdim - 1, facets, false);
   std::vector<double> x;
@@ -174,14 +170,9 @@ std::int64_t interior_facets(const Model& model, int tag)
   mesh.topology_mutable().create_connectivity(tdim - 1, tdim);
   const auto f_to_c = mesh.topology().connectivity(tdim - 1, tdim);
   const std::int32_t owned = mesh.topology().index_map(tdim - 1)->size_local();
-  const auto& t = *model.facet_tags;
   std::int64_t n = 0;
-  for (std::size_t i = 0; i < t.indices().size(); ++i)
-  {
-    const std::int32_t f = t.indices()[i];
-    if (t.values()[i] == tag && f < owned && f_to_c->num_links(f) == 2)
-      ++n;
-  }
+  for (std::int32_t f : tagged_entities(*model.facet_tags, {tag}))
+    n += f < owned && f_to_c->num_links(f) == 2;
   MPI_Allreduce(MPI_IN_PLACE, &n, 1, MPI_INT64_T, MPI_SUM, mesh.comm());
   return n;
 }

@@ -1,6 +1,7 @@
 #include "displacement_envelope.h"
 #include "gather.h"
 #include <algorithm>
+#include <damseis/geometry/tagged.h>
 #include <dolfinx/common/IndexMap.h>
 #include <dolfinx/fem/DirichletBC.h>
 #include <dolfinx/fem/DofMap.h>
@@ -18,12 +19,7 @@ DisplacementEnvelope::DisplacementEnvelope(
     const dolfinx::mesh::MeshTags<std::int32_t>& facet_tags, int tag, int comp)
     : _bs(V.dofmap()->index_map_bs()), _comp(comp)
 {
-  std::vector<std::int32_t> facets;
-  for (std::size_t i = 0; i < facet_tags.indices().size(); ++i)
-  {
-    if (facet_tags.values()[i] == tag)
-      facets.push_back(facet_tags.indices()[i]);
-  }
+  const auto facets = geometry::tagged_entities(facet_tags, {tag});
   const int tdim = V.mesh()->topology().dim();
   auto blocks = dolfinx::fem::locate_dofs_topological(V, tdim - 1, facets);
   const std::int32_t owned = V.dofmap()->index_map->size_local();
