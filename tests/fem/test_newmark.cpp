@@ -985,7 +985,7 @@ TEST(NewmarkModal, ThreeDofChainDistributedMatchesModalSuperposition)
     make_mat(PETSC_COMM_WORLD,
              {2.0, -1.0, 0.0, -1.0, 2.0, -1.0, 0.0, -1.0, 1.0}, 3, K);
     LinearNewmark nm(M.m, K.m, {}, {0.01, 0.0});
-    EXPECT_EQ(nm.solver().name(),
+    EXPECT_EQ(nm.solver_name(),
               size == 1 ? "petsc-cholesky-nd" : "redundant-petsc-lu-nd");
   }
   for (double alpha : {0.0, -0.2})

@@ -4,33 +4,124 @@
 
 namespace damseis::contact
 {
+namespace
+{
+/// The residual at forces p with relative displacements w (3n), the pair
+/// blocks of its generalised Jacobian and the states.
+Eigen::VectorXd residual_at(const ContactProblem& c, const Eigen::VectorXd& p,
+                            const Eigen::VectorXd& w,
+                            std::vector<PairState>& states,
+                            std::vector<PairResidual>* blocks)
+{
+  const Eigen::Index n = static_cast<Eigen::Index>(c.laws.size());
+  Eigen::VectorXd F(3 * n);
+  states.resize(n);
+  if (blocks)
+    blocks->resize(n);
+  for (Eigen::Index i = 0; i < n; ++i)
+  {
+    const Eigen::Vector3d wi = w.segment<3>(3 * i);
+    const PairResidual r =
+        alart_curnier(c.laws[i], p.segment<3>(3 * i), c.g0[i] + wi[0],
+                      wi.tail<2>() - c.wT_old.segment<2>(2 * i));
+    F.segment<3>(3 * i) = r.F;
+    states[i] = r.state;
+    if (blocks)
+      (*blocks)[i] = r;
+  }
+  return F;
+}
+
+/// J = B + A W (dense) from the pair blocks.
+Eigen::MatrixXd dense_jacobian(const ContactProblem& c,
+                               const std::vector<PairResidual>& blocks)
+{
+  const Eigen::Index n = static_cast<Eigen::Index>(c.laws.size());
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(3 * n, 3 * n);
+  for (Eigen::Index i = 0; i < n; ++i)
+  {
+    J.block(3 * i, 3 * i, 3, 3) += blocks[i].B;
+    J.middleRows(3 * i, 3) += blocks[i].A * c.W.middleRows(3 * i, 3);
+  }
+  return J;
+}
+
+/// The Newton direction d of J d = -F with J = B + A W, found through
+/// z = W d: (B W^-1 + A) z = -F. A row whose B row is zero reads
+/// A_jj z_j = -F_j (sticking pairs, the normal row of closed pairs, keyed
+/// pairs); the others couple through W^-1 and form a dense system of their
+/// own size. Returns false if that system is singular.
+bool reduced_direction(const ContactProblem& c,
+                       const std::vector<PairResidual>& blocks,
+                       const Eigen::VectorXd& F, Eigen::VectorXd& d,
+                       Eigen::VectorXd& z, int& rows)
+{
+  const Eigen::Index n3 = F.size();
+  z = Eigen::VectorXd::Zero(n3);
+  std::vector<Eigen::Index> coupled; // the rows (= components) in the system
+  std::vector<Eigen::Index> position(n3, -1);
+  for (Eigen::Index j = 0; j < n3; ++j)
+  {
+    const PairResidual& b = blocks[j / 3];
+    const Eigen::Index l = j % 3;
+    const bool local = b.B.row(l).isZero(0.0) && b.A(l, l) != 0.0 &&
+                       b.A.row(l).cwiseAbs().sum() == std::abs(b.A(l, l));
+    if (local)
+      z[j] = -F[j] / b.A(l, l);
+    else
+    {
+      position[j] = static_cast<Eigen::Index>(coupled.size());
+      coupled.push_back(j);
+    }
+  }
+  rows = static_cast<int>(coupled.size());
+  if (!coupled.empty())
+  {
+    const Eigen::Index m = static_cast<Eigen::Index>(coupled.size());
+    Eigen::MatrixXd S(m, m);
+    Eigen::VectorXd rhs(m);
+    Eigen::RowVectorXd BW(n3);
+    for (Eigen::Index r = 0; r < m; ++r)
+    {
+      const Eigen::Index j = coupled[r], i = j / 3, l = j % 3;
+      const PairResidual& b = blocks[i];
+      // Row l of B_i times the rows of W^-1 of pair i.
+      BW = b.B(l, 0) * c.W_inv.row(3 * i) + b.B(l, 1) * c.W_inv.row(3 * i + 1) +
+           b.B(l, 2) * c.W_inv.row(3 * i + 2);
+      for (int k = 0; k < 3; ++k)
+        BW[3 * i + k] += b.A(l, k);
+      double known = 0.0;
+      for (Eigen::Index k = 0; k < n3; ++k)
+      {
+        if (position[k] >= 0)
+          S(r, position[k]) = BW[k];
+        else
+          known += BW[k] * z[k];
+      }
+      rhs[r] = -F[j] - known;
+    }
+    Eigen::PartialPivLU<Eigen::MatrixXd> lu(S);
+    const Eigen::VectorXd zc = lu.solve(rhs);
+    if (!zc.allFinite() || (S * zc - rhs).norm() > 1e-6 * rhs.norm() + 1e-300)
+      return false;
+    for (Eigen::Index r = 0; r < m; ++r)
+      z[coupled[r]] = zc[r];
+  }
+  d = c.W_inv * z;
+  return true;
+}
+} // namespace
+
 Eigen::VectorXd contact_residual(const ContactProblem& c,
                                  const Eigen::VectorXd& p, Eigen::VectorXd& w,
                                  std::vector<PairState>& states,
                                  Eigen::MatrixXd* J)
 {
-  const Eigen::Index n = static_cast<Eigen::Index>(c.laws.size());
   w = c.w_free + c.W * p;
-  Eigen::VectorXd F(3 * n);
-  states.resize(n);
+  std::vector<PairResidual> blocks;
+  Eigen::VectorXd F = residual_at(c, p, w, states, J ? &blocks : nullptr);
   if (J)
-    J->setZero(3 * n, 3 * n);
-  for (Eigen::Index i = 0; i < n; ++i)
-  {
-    const Eigen::Vector3d pi = p.segment<3>(3 * i);
-    const Eigen::Vector3d wi = w.segment<3>(3 * i);
-    const PairResidual r =
-        alart_curnier(c.laws[i], pi, c.g0[i] + wi[0],
-                      wi.tail<2>() - c.wT_old.segment<2>(2 * i));
-    F.segment<3>(3 * i) = r.F;
-    states[i] = r.state;
-    if (J)
-    {
-      // Rows of pair i: B on its own forces, A through all of w.
-      J->block(3 * i, 3 * i, 3, 3) += r.B;
-      J->middleRows(3 * i, 3) += r.A * c.W.middleRows(3 * i, 3);
-    }
-  }
+    *J = dense_jacobian(c, blocks);
   return F;
 }
 
@@ -38,6 +129,7 @@ NcpReport solve_ncp(const ContactProblem& c, const Eigen::VectorXd& p0,
                     const NcpSettings& s)
 {
   const Eigen::Index n = static_cast<Eigen::Index>(c.laws.size());
+  const bool reduced = c.W_inv.rows() == 3 * n && n > 0;
   NcpReport rep;
   rep.p = p0;
   // Force scale: the largest force that closes a free gap or stops a free
@@ -52,8 +144,9 @@ NcpReport solve_ncp(const ContactProblem& c, const Eigen::VectorXd& p0,
                                       .norm()});
   }
   scale = std::max(scale, p0.lpNorm<Eigen::Infinity>());
-  Eigen::MatrixXd J;
-  Eigen::VectorXd F = contact_residual(c, rep.p, rep.w, rep.states, &J);
+  std::vector<PairResidual> blocks;
+  rep.w = c.w_free + c.W * rep.p;
+  Eigen::VectorXd F = residual_at(c, rep.p, rep.w, rep.states, &blocks);
   double psi = 0.5 * F.squaredNorm();
   for (rep.iterations = 0; rep.iterations < s.max_iterations; ++rep.iterations)
   {
@@ -63,27 +156,38 @@ NcpReport solve_ncp(const ContactProblem& c, const Eigen::VectorXd& p0,
       rep.converged = true;
       break;
     }
-    Eigen::PartialPivLU<Eigen::MatrixXd> lu(J);
-    Eigen::VectorXd d = lu.solve(-F);
-    if (!d.allFinite() || (J * d + F).norm() > 1e-6 * F.norm())
+    // The direction d (and dw = W d), by the reduced system or densely.
+    Eigen::VectorXd d, dw;
+    Eigen::MatrixXd J;
+    bool found = reduced && reduced_direction(c, blocks, F, d, dw,
+                                              rep.reduced_rows);
+    if (!found)
     {
-      // A singular generalised Jacobian: Levenberg-Marquardt damping.
-      const double lm = 1e-8 * std::max(J.norm(), 1e-300);
-      d = (J.transpose() * J +
-           lm * lm * Eigen::MatrixXd::Identity(3 * n, 3 * n))
-              .ldlt()
-              .solve(-J.transpose() * F);
+      J = dense_jacobian(c, blocks);
+      Eigen::PartialPivLU<Eigen::MatrixXd> lu(J);
+      d = lu.solve(-F);
+      if (!d.allFinite() || (J * d + F).norm() > 1e-6 * F.norm())
+      {
+        // A singular generalised Jacobian: Levenberg-Marquardt damping.
+        const double lm = 1e-8 * std::max(J.norm(), 1e-300);
+        d = (J.transpose() * J +
+             lm * lm * Eigen::MatrixXd::Identity(3 * n, 3 * n))
+                .ldlt()
+                .solve(-J.transpose() * F);
+      }
+      dw = c.W * d;
     }
-    auto search = [&](const Eigen::VectorXd& dir) -> bool
+    // Armijo line search on psi along (d, dw); w moves linearly with p.
+    auto search = [&](const Eigen::VectorXd& dir,
+                      const Eigen::VectorXd& dir_w) -> bool
     {
       for (double alpha = 1.0; alpha > 1e-6; alpha *= 0.5)
       {
-        Eigen::VectorXd w;
         std::vector<PairState> st;
         const Eigen::VectorXd trial = rep.p + alpha * dir;
-        const Eigen::VectorXd Ft = contact_residual(c, trial, w, st);
-        const double psi_t = 0.5 * Ft.squaredNorm();
-        if (psi_t <= (1.0 - 2e-4 * alpha) * psi)
+        const Eigen::VectorXd w = rep.w + alpha * dir_w;
+        const Eigen::VectorXd Ft = residual_at(c, trial, w, st, nullptr);
+        if (0.5 * Ft.squaredNorm() <= (1.0 - 2e-4 * alpha) * psi)
         {
           rep.p = trial;
           return true;
@@ -92,13 +196,18 @@ NcpReport solve_ncp(const ContactProblem& c, const Eigen::VectorXd& p0,
       }
       return false;
     };
-    if (!search(d))
+    if (!search(d, dw))
     {
       ++rep.gradient_steps;
-      if (!search(-J.transpose() * F))
+      if (J.size() == 0)
+        J = dense_jacobian(c, blocks);
+      const Eigen::VectorXd g = -J.transpose() * F;
+      if (!search(g, c.W * g))
         break;
     }
-    F = contact_residual(c, rep.p, rep.w, rep.states, &J);
+    // w afresh from p (no drift from the line search's updates).
+    rep.w = c.w_free + c.W * rep.p;
+    F = residual_at(c, rep.p, rep.w, rep.states, &blocks);
     psi = 0.5 * F.squaredNorm();
   }
   rep.residual = F.norm() / scale;

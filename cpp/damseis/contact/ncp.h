@@ -14,6 +14,11 @@ struct ContactProblem
 {
   std::vector<PairLaw> laws; ///< one per pair
   Eigen::MatrixXd W;         ///< 3n x 3n, symmetric positive definite
+  /// W^-1, optional (empty: not used). With it the Newton direction d is
+  /// found through z = W d: the rows of sticking pairs give their z at
+  /// once, and the dense system couples only the rows of open and sliding
+  /// pairs (small when most pairs stick); the line search moves w along z.
+  Eigen::MatrixXd W_inv;
   Eigen::VectorXd w_free;    ///< 3n: (w_n, w_a, w_b) per pair without force
   Eigen::VectorXd wT_old;    ///< 2n: the tangential w of the last step
   Eigen::VectorXd g0;        ///< n: initial gaps (0: closed joints)
@@ -32,6 +37,7 @@ struct NcpReport
   int iterations = 0;        ///< Newton iterations
   int line_search_steps = 0; ///< step halvings
   int gradient_steps = 0;    ///< fallbacks to the gradient direction
+  int reduced_rows = 0;      ///< size of the last reduced system (W_inv)
   bool converged = false;
   double residual = 0.0; ///< |F| / force scale at the end
 };

@@ -27,8 +27,10 @@ double RayleighDamping::ratio_at(double f_hz) const
 LinearNewmark::LinearNewmark(Mat M, Mat K, RayleighDamping damping,
                              TimeScheme scheme,
                              linalg::Factorization factorization,
-                             const std::vector<Mat>& extra_damping)
-    : _M(M), _K(K), _damping(damping), _scheme(scheme)
+                             const std::vector<Mat>& extra_damping,
+                             std::shared_ptr<ConstrainedSolve> constrained)
+    : _M(M), _K(K), _damping(damping), _scheme(scheme),
+      _constrained(std::move(constrained))
 {
   if (!(scheme.dt > 0.0 && std::isfinite(scheme.dt)))
     throw std::invalid_argument("time step must be positive");
@@ -58,24 +60,29 @@ LinearNewmark::LinearNewmark(Mat M, Mat K, RayleighDamping damping,
     _cC = (1.0 + alpha) * a1;
     MatAXPY(_Keff, _cC, _Ce, DIFFERENT_NONZERO_PATTERN);
   }
-  MPI_Comm comm;
-  PetscObjectGetComm(reinterpret_cast<PetscObject>(K), &comm);
-  _solver = std::make_unique<linalg::DirectSolver>(comm, factorization);
-  _solver->factorize(_Keff);
+  if (_constrained)
+    _constrained->factorize(_Keff);
+  else
+  {
+    MPI_Comm comm;
+    PetscObjectGetComm(reinterpret_cast<PetscObject>(K), &comm);
+    _solver = std::make_unique<linalg::DirectSolver>(comm, factorization);
+    _solver->factorize(_Keff);
+  }
 
   for (std::array<Vec, 3>* set : {&_x, &_Mx, &_Kx, &_Cx})
   {
     for (Vec& x : *set)
       MatCreateVecs(K, &x, nullptr);
   }
-  for (Vec* x : {&_f, &_rhs, &_u_next, &_image_next})
+  for (Vec* x : {&_f, &_rhs, &_u_next, &_image_next, &_r})
     MatCreateVecs(K, x, nullptr);
   for (std::array<Vec, 3>* set : {&_x, &_Mx, &_Kx, &_Cx})
   {
     for (Vec x : *set)
       VecSet(x, 0.0);
   }
-  for (Vec x : {_f, _rhs, _u_next, _image_next})
+  for (Vec x : {_f, _rhs, _u_next, _image_next, _r})
     VecSet(x, 0.0);
 }
 
@@ -86,7 +93,7 @@ LinearNewmark::~LinearNewmark()
     for (Vec& x : *set)
       VecDestroy(&x);
   }
-  for (Vec* x : {&_f, &_rhs, &_u_next, &_image_next})
+  for (Vec* x : {&_f, &_rhs, &_u_next, &_image_next, &_r})
     VecDestroy(x);
   MatDestroy(&_Keff);
   MatDestroy(&_Ce);
@@ -171,7 +178,15 @@ void LinearNewmark::step(Vec f_next)
     VecMAXPY(_rhs, 3, c, cx);
   }
 
-  _solver->solve(_rhs, _u_next);
+  if (_constrained)
+  {
+    // K_eff u' = rhs + r: the constraint force joins the right-hand side
+    // from which K u' follows below.
+    _constrained->solve(_rhs, _u_next, _r);
+    VecAXPY(_rhs, 1.0, _r);
+  }
+  else
+    _solver->solve(_rhs, _u_next);
 
   // Images of the new displacement: M u' (and C_e u') by a product, K u'
   // from the solved equation (exact up to the solver's residual).
@@ -189,5 +204,35 @@ void LinearNewmark::step(Vec f_next)
   advance(_Kx, _image_next, a0, a2, a3, dt, gamma);
   advance(_x, _u_next, a0, a2, a3, dt, gamma);
   VecCopy(f_next, _f);
+}
+void LinearNewmark::correct_velocity(Vec dv)
+{
+  // v += dv, a += dv / (gamma dt), and the same for the images M x, K x,
+  // C_e x (by products with dv).
+  const double c = 1.0 / (_scheme.gamma() * _scheme.dt);
+  VecAXPY(_x[1], 1.0, dv);
+  VecAXPY(_x[2], c, dv);
+  std::array<std::pair<Mat, std::array<Vec, 3>*>, 3> images = {
+      std::make_pair(_M, &_Mx), std::make_pair(_K, &_Kx),
+      std::make_pair(_Ce, &_Cx)};
+  for (auto [A, x] : images)
+  {
+    if (!A)
+      continue;
+    MatMult(A, dv, _image_next);
+    VecAXPY((*x)[1], 1.0, _image_next);
+    VecAXPY((*x)[2], c, _image_next);
+  }
+}
+
+std::string LinearNewmark::solver_name() const
+{
+  return _constrained ? _constrained->name() : _solver->name();
+}
+
+double LinearNewmark::factor_seconds() const
+{
+  return _constrained ? _constrained->factor_seconds()
+                      : _solver->factor_seconds();
 }
 } // namespace damseis::dynamics

@@ -28,11 +28,8 @@ public:
   void save(Arrays& arrays) const override;
   void restore(const CheckpointData& data) override;
   void resume(Vec f) override;
-  std::string solver_name() const override { return _newmark.solver().name(); }
-  double factor_seconds() const override
-  {
-    return _newmark.solver().factor_seconds();
-  }
+  std::string solver_name() const override { return _newmark.solver_name(); }
+  double factor_seconds() const override { return _newmark.factor_seconds(); }
 
 private:
   Mat _K;

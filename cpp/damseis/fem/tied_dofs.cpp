@@ -1,8 +1,10 @@
 #include "tied_dofs.h"
+#include "facet_dofs.h"
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <damseis/geometry/tagged.h>
+#include <damseis/linalg/all_gather.h>
 #include <dolfinx/common/IndexMap.h>
 #include <dolfinx/fem/DirichletBC.h>
 #include <dolfinx/fem/DofMap.h>
@@ -12,38 +14,6 @@
 
 namespace damseis::fem
 {
-namespace
-{
-/// Owned blocks of V on the facets with this tag.
-std::vector<std::int32_t>
-owned_blocks_on(const dolfinx::fem::FunctionSpace& V,
-                const dolfinx::mesh::MeshTags<std::int32_t>& facet_tags,
-                int tag)
-{
-  const auto facets = geometry::tagged_entities(facet_tags, {tag});
-  const int tdim = V.mesh()->topology().dim();
-  auto blocks =
-      dolfinx::fem::locate_dofs_topological(V, tdim - 1, facets, true);
-  const std::int32_t n = V.dofmap()->index_map->size_local();
-  std::erase_if(blocks, [n](std::int32_t b) { return b >= n; });
-  return blocks;
-}
-
-/// Gathers a vector of doubles from every rank onto every rank.
-std::vector<double> all_gather(MPI_Comm comm, const std::vector<double>& v)
-{
-  int size = 1;
-  MPI_Comm_size(comm, &size);
-  int n = static_cast<int>(v.size());
-  std::vector<int> counts(size), offsets(size + 1, 0);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
-  std::partial_sum(counts.begin(), counts.end(), offsets.begin() + 1);
-  std::vector<double> all(offsets.back());
-  MPI_Allgatherv(v.data(), n, MPI_DOUBLE, all.data(), counts.data(),
-                 offsets.data(), MPI_DOUBLE, comm);
-  return all;
-}
-} // namespace
 
 Mat tie_prolongation(const dolfinx::fem::FunctionSpace& V,
                      const dolfinx::mesh::MeshTags<std::int32_t>& facet_tags,
@@ -73,7 +43,7 @@ Mat tie_prolongation(const dolfinx::fem::FunctionSpace& V,
   }
   std::sort(slaves.begin(), slaves.end());
   slaves.erase(std::unique(slaves.begin(), slaves.end()), slaves.end());
-  const std::vector<double> masters = all_gather(comm, masters_local);
+  const std::vector<double> masters = linalg::all_gather(comm, masters_local);
   const std::size_t n_masters = masters.size() / 4;
   // A node on both faces (where a joint meets bonded material, e.g. the
   // foundation) is one dof already: it is not a slave.
@@ -157,7 +127,7 @@ Mat tie_prolongation(const dolfinx::fem::FunctionSpace& V,
     master_reduced_local.push_back(static_cast<double>(reduced[b]));
   }
   const std::vector<double> master_reduced =
-      all_gather(comm, master_reduced_local);
+      linalg::all_gather(comm, master_reduced_local);
   std::vector<std::pair<std::int64_t, std::int64_t>> lookup(n_masters);
   for (std::size_t m = 0; m < n_masters; ++m)
   {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <damseis/linalg/all_gather.h>
 #include <dolfinx/common/IndexMap.h>
 #include <dolfinx/mesh/Geometry.h>
 #include <dolfinx/mesh/Topology.h>
@@ -16,23 +17,6 @@ namespace damseis::geometry
 {
 namespace
 {
-/// Every rank's values, concatenated in rank order, on every rank.
-template <typename T>
-std::vector<T> all_gather(MPI_Comm comm, const std::vector<T>& v,
-                          MPI_Datatype type)
-{
-  int size = 0;
-  MPI_Comm_size(comm, &size);
-  int n = static_cast<int>(v.size());
-  std::vector<int> counts(size), offsets(size + 1, 0);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
-  std::partial_sum(counts.begin(), counts.end(), offsets.begin() + 1);
-  std::vector<T> all(offsets.back());
-  MPI_Allgatherv(v.data(), n, type, all.data(), counts.data(), offsets.data(),
-                 type, comm);
-  return all;
-}
-
 /// The owned facets with tag `tag`: for each, its vertices' coordinates
 /// (3 per vertex) and global node numbers; gathered from all ranks.
 struct SideFacets
@@ -60,8 +44,7 @@ SideFacets side_facets(const Model& model, int tag)
   for (std::int32_t n : nodes)
     x.insert(x.end(), {gx[3 * n], gx[3 * n + 1], gx[3 * n + 2]});
   MPI_Comm comm = mesh.comm();
-  return {tdim, all_gather(comm, x, MPI_DOUBLE),
-          all_gather(comm, ids, MPI_INT64_T)};
+  return {tdim, linalg::all_gather(comm, x), linalg::all_gather(comm, ids)};
 }
 
 /// Distinct points (within tol) of a list; returns each input point's

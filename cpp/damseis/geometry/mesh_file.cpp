@@ -2,6 +2,7 @@
 #include "gmsh_session.h"
 #include "root_status.h"
 #include <algorithm>
+#include <damseis/linalg/all_gather.h>
 #include <dolfinx/fem/CoordinateElement.h>
 #include <dolfinx/io/XDMFFile.h>
 #include <dolfinx/mesh/Mesh.h>
@@ -83,16 +84,8 @@ void add_groups(MPI_Comm comm, const dolfinx::mesh::MeshTags<std::int32_t>& t,
                 std::map<std::string, PhysicalGroup>& groups)
 {
   std::set<std::int32_t> local(t.values().begin(), t.values().end());
-  std::vector<std::int32_t> mine(local.begin(), local.end());
-  int size = 0;
-  MPI_Comm_size(comm, &size);
-  int n = static_cast<int>(mine.size());
-  std::vector<int> counts(size), offsets(size + 1, 0);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
-  std::partial_sum(counts.begin(), counts.end(), offsets.begin() + 1);
-  std::vector<std::int32_t> all(offsets.back());
-  MPI_Allgatherv(mine.data(), n, MPI_INT32_T, all.data(), counts.data(),
-                 offsets.data(), MPI_INT32_T, comm);
+  const std::vector<std::int32_t> all = linalg::all_gather(
+      comm, std::vector<std::int32_t>(local.begin(), local.end()));
   for (std::int32_t v : all)
     groups[std::to_string(t.dim()) + ":" + std::to_string(v)] = {t.dim(), v};
 }

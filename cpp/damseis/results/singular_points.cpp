@@ -1,6 +1,7 @@
 #include "singular_points.h"
 #include <algorithm>
 #include <cmath>
+#include <damseis/linalg/all_gather.h>
 #include <dolfinx/common/IndexMap.h>
 #include <dolfinx/mesh/Mesh.h>
 #include <dolfinx/mesh/MeshTags.h>
@@ -62,17 +63,7 @@ std::vector<Point3> meeting_points(const geometry::Model& model,
       local.insert(local.end(), {x[3 * n], x[3 * n + 1], x[3 * n + 2]});
   }
   // Gather on every rank.
-  MPI_Comm comm = mesh.comm();
-  int size = 1;
-  MPI_Comm_size(comm, &size);
-  int count = static_cast<int>(local.size());
-  std::vector<int> counts(size), offsets(size + 1, 0);
-  MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
-  for (int r = 0; r < size; ++r)
-    offsets[r + 1] = offsets[r] + counts[r];
-  std::vector<double> all(offsets[size]);
-  MPI_Allgatherv(local.data(), count, MPI_DOUBLE, all.data(), counts.data(),
-                 offsets.data(), MPI_DOUBLE, comm);
+  const std::vector<double> all = linalg::all_gather(mesh.comm(), local);
   std::vector<Point3> points;
   for (std::size_t i = 0; i + 2 < all.size(); i += 3)
     points.push_back({all[i], all[i + 1], all[i + 2]});
