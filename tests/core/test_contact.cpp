@@ -426,8 +426,7 @@ TEST(ContactNcp, ReducedNewtonMatchesTheDenseOne)
     const NcpReport red = solve_ncp(pb, Eigen::VectorXd::Zero(3 * n));
     ASSERT_TRUE(dense.converged && red.converged) << "trial " << trial;
     EXPECT_EQ(dense.iterations, red.iterations) << "trial " << trial;
-    EXPECT_LT((dense.p - red.p).norm(),
-              1e-9 * std::max(1.0, dense.p.norm()))
+    EXPECT_LT((dense.p - red.p).norm(), 1e-9 * std::max(1.0, dense.p.norm()))
         << "trial " << trial;
     EXPECT_EQ(dense.states, red.states) << "trial " << trial;
     reduced_smaller += red.reduced_rows < 3 * n;

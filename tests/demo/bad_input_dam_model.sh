@@ -2,7 +2,11 @@
 # Bad input to dam_model (issue 18): a missing physical group, a group of
 # the wrong dimension, a cell group without a material, arrays of the wrong
 # length, names listed twice, unmatched and non-conforming joint sides, a
-# load on interior facets, a degenerate cell, a point outside the model: one line naming the file, the key and the fix,
+# load on interior facets, a degenerate cell, a point outside the model,
+# contact joints misconfigured (2D, no joints, friction count or sign,
+# restitution outside [0, 1], a keyed joint that is not a joint, contact
+# keys with bonded joints, with HTC concrete, an unknown dead-load option):
+# one line naming the file, the key and the fix,
 # exit code 2, nothing written.
 # Usage: bad_input_dam_model.sh DAM_MODEL SOURCE_DIR
 set -u
@@ -34,6 +38,16 @@ expect dm_region_twice 'regions\.groups: lists "dam" twice' --set 'regions.group
 expect dm_history_name_twice 'output\.history_names: lists "a" twice' --set 'output.history_names=[a, a]' --set 'output.history_points=[0, 100, 0, 100]'
 expect dm_interior_traction 'loads\.traction_groups: names "joint_left", which has .* facets inside the model' --case "$block" --set mesh.file=meshes/block_jointless.msh --set 'joints.side1=[]' --set 'joints.side2=[]' --set 'loads.traction_groups=[joint_left]' --set 'loads.traction=[0, 0, -1e5]'
 expect dm_concrete_zones 'regions\.E: differs between the dam regions' --case "$block" --set material.model=plastic --set 'regions.E=[24e9, 20e9]'
+# Contact joints (issue 19).
+expect dm_contact_2d 'joints\.model: is "contact" for a 2D mesh' --set joints.model=contact --set 'joints.side1=[]' --set 'joints.side2=[]'
+expect dm_contact_no_joints 'joints\.model: is "contact" but joints\.side1 is empty' --case "$block" --set joints.model=contact --set mesh.file=meshes/block_jointless.msh --set 'joints.side1=[]' --set 'joints.side2=[]'
+expect dm_contact_friction_count 'joints\.friction: has 2 values for 1 joints' --case "$block" --set joints.model=contact --set 'joints.friction=[1, 1]'
+expect dm_contact_friction_negative 'joints\.friction=\[-0\.5\] is out of range; expected 0 <= friction' --case "$block" --set joints.model=contact --set 'joints.friction=[-0.5]'
+expect dm_contact_restitution 'joints\.restitution=1\.5 is out of range; expected 0 <= restitution <= 1' --case "$block" --set joints.model=contact --set joints.restitution=1.5
+expect dm_contact_keyed_unknown 'joints\.keyed: names "joint_right", which is not a joint' --case "$block" --set joints.model=contact --set 'joints.keyed=[joint_right]'
+expect dm_contact_keys_bonded 'joints\.friction: is given while joints\.model = "bonded"' --case "$block" --set 'joints.friction=[0.5]'
+expect dm_contact_concrete 'joints\.model: is "contact" with material\.model = "plastic"' --case "$block" --set joints.model=contact --set material.model=plastic
+expect dm_contact_dead_load 'joints\.dead_load=glued is not an allowed value; expected one of "joints_active", "cantilever"' --case "$block" --set joints.model=contact --set joints.dead_load=glued
 
 if [ "$failures" -ne 0 ]; then
   echo "$failures bad-input checks failed"; exit 1

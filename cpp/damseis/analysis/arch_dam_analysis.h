@@ -1,9 +1,10 @@
 // The seismic analysis of a 3D arch dam on a massless foundation (demo
 // `arch_dam`), in the pieces its main.cpp composes: the model, the linear
-// analysis with bonded joints, the results.
+// analysis with bonded or contact joints, the results.
 #pragma once
 
 #include "arch_dam_case.h"
+#include "linear_seismic.h"
 #include "seismic_analysis.h"
 #include <damseis/fem/elastic_model.h>
 #include <damseis/geometry/arch_mesh.h>
@@ -12,6 +13,7 @@
 #include <memory>
 #include <mpi.h>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 namespace damseis::analysis
 {
@@ -24,13 +26,15 @@ struct ArchDamModel
   geometry::ArchModel mesh;
   std::unique_ptr<fem::ElasticModel> fe;
   dolfinx::la::petsc::Matrix tie{nullptr, false};
+  /// joints.model = "contact": the contact joints (tie: their modal stage).
+  std::optional<ContactJoints> contact;
   SeismicSettings seismic;
 };
 
 /// Prints the size estimate, meshes (gmsh, rank 0) and builds the model.
 ArchDamModel arch_dam_model(MPI_Comm comm, const ArchDamConfig& cfg);
 
-/// The linear analysis of the model (joints bonded).
+/// The linear analysis of the model (joints bonded, or in contact).
 std::unique_ptr<SeismicAnalysis>
 arch_dam_seismic_analysis(ArchDamModel& model, const RunFolder& folder);
 

@@ -1,4 +1,5 @@
 #include "arch_dam_case.h"
+#include "joint_contact_keys.h"
 #include <damseis/geometry/arch_case.h>
 #include <damseis/geometry/tags.h>
 
@@ -33,11 +34,72 @@ input::Schema arch_dam_schema()
   s.real("rock.nu", "0.25", "-", "Poisson's ratio of the foundation rock")
       .between_exclusive(-1, 0.5);
   s.string("joints.model", "bonded", "-",
-           "contraction joints in a linear analysis (bonded: tied pairs)",
-           {"bonded"});
+           "contraction joints in a linear analysis: bonded (tied pairs) or "
+           "contact (Coulomb friction, no tension)",
+           {"bonded", "contact"});
+  s.real_array("joints.friction", "[]", "-",
+               "contact: friction coefficient per joint, in label order ([]: "
+               "1.0 each, the paper's)")
+      .between(0, 100);
+  s.string("joints.keyed", "", "-",
+           "contact: labels of the joints with shear keys (no sliding, "
+           "opening free), e.g. \"DG\"");
+  add_joint_contact_keys(s, "cantilever");
   add_seismic_keys(s, arch_dam_directions(), "[]", "[]");
   return s;
 }
+
+namespace
+{
+/// The labels of the joints of the geometry (the active candidates).
+std::string joint_labels(const geometry::JointDefinition& j)
+{
+  if (!j.active.empty())
+    return j.active;
+  const std::size_t n = j.positions.empty() ? static_cast<std::size_t>(j.count)
+                                            : j.positions.size();
+  std::string labels;
+  for (std::size_t i = 0; i < n; ++i)
+    labels += static_cast<char>('A' + i);
+  return labels;
+}
+
+/// joints.model = "contact": friction and keys per joint, restitution,
+/// static stage.
+void read_joint_contact(const input::Case& c, ArchDamConfig& a)
+{
+  refuse_contact_keys_when_bonded(c, {"joints.friction", "joints.keyed"});
+  if (c.string("joints.model") != "contact")
+    return;
+  a.joints = JointModel::contact;
+  const std::string labels = joint_labels(a.geometry.joints);
+  if (labels.empty())
+    c.fail("joints.model", "is \"contact\" but the dam has no joints",
+           "joints.count (or joints.positions) > 0");
+  if (!a.geometry.mesh.split_joints)
+    c.fail("joints.model",
+           "is \"contact\" with mesh.split_joints = false (no joint faces)",
+           "mesh.split_joints = true for contact joints");
+  const auto friction = c.reals("joints.friction");
+  if (!friction.empty() && friction.size() != labels.size())
+    c.fail("joints.friction",
+           "has " + std::to_string(friction.size()) + " values for " +
+               std::to_string(labels.size()) + " joints (" + labels + ")",
+           "one coefficient per joint in label order, or [] for 1.0");
+  for (std::size_t i = 0; i < labels.size(); ++i)
+    a.friction[labels[i]] = friction.empty() ? 1.0 : friction[i];
+  a.keyed = c.string("joints.keyed");
+  for (char k : a.keyed)
+  {
+    if (labels.find(k) == std::string::npos)
+      c.fail("joints.keyed",
+             std::string("names joint ") + k + ", which is not a joint",
+             "labels of the joints (" + labels + ")");
+  }
+  a.restitution = c.real("joints.restitution");
+  a.statics = read_joint_statics(c);
+}
+} // namespace
 
 ArchDamConfig read_arch_dam_config(const input::Case& c)
 {
@@ -74,6 +136,7 @@ ArchDamConfig read_arch_dam_config(const input::Case& c)
            "least mesh.size / 10 from both");
   a.seismic.faces = {{"upstream", {tags::upstream_face, tags::upstream_wetted}},
                      {"downstream", {tags::downstream_face}}};
+  read_joint_contact(c, a);
   return a;
 }
 } // namespace damseis::analysis

@@ -7,13 +7,17 @@
 #include <damseis/fem/elastic_model.h>
 #include <damseis/geometry/arch_dam.h>
 #include <damseis/input/case.h>
+#include <damseis/joint/static_contact.h>
+#include <map>
+#include <string>
 
 namespace damseis::analysis
 {
 /// How contraction joints act in a linear analysis.
 enum class JointModel
 {
-  bonded, ///< pairs tied: the monolithic dam
+  bonded,  ///< pairs tied: the monolithic dam
+  contact, ///< Coulomb friction, no tension, impact correction
 };
 
 struct ArchDamConfig
@@ -23,6 +27,12 @@ struct ArchDamConfig
   fem::Material concrete;
   fem::Material rock; ///< massless foundation (rho = 0)
   JointModel joints = JointModel::bonded;
+  /// Contact joints: friction and shear keys per joint label, restitution,
+  /// static stage.
+  std::map<char, double> friction;
+  std::string keyed; ///< labels of the keyed joints
+  double restitution = 1.0;
+  joint::StaticContactSettings statics;
   SeismicSettings seismic;
 };
 

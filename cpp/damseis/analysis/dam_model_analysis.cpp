@@ -109,6 +109,22 @@ DamModel dam_model(MPI_Comm comm, const DamModelConfig& cfg)
     MatGetSize(m.tie.mat(), &rows, &cols);
     m.joint_pairs = (rows - cols) / m.fe->dim();
   }
+  if (cfg.contact.enabled)
+  {
+    ContactJoints c;
+    for (std::size_t j = 0; j < cfg.joints.size(); ++j)
+    {
+      const auto& [side1, side2] = cfg.joints[j];
+      c.joints.push_back({side1, cfg.mesh->groups.at(side1).tag,
+                          cfg.mesh->groups.at(side2).tag,
+                          cfg.contact.friction[j], cfg.contact.keyed[j]});
+    }
+    c.facet_tags = cfg.group_facets.get();
+    c.restitution = cfg.contact.restitution;
+    c.statics = cfg.contact.statics;
+    c.tolerance = cfg.joint_tolerance;
+    m.contact = std::move(c);
+  }
 
   // Loads beyond dead weight, water and ground motion.
   for (const GroupVector& b : cfg.body_forces)
@@ -134,7 +150,8 @@ DamModel dam_model(MPI_Comm comm, const DamModelConfig& cfg)
   results::print(comm, "model of " + cfg.mesh_file.filename().string() + ": " +
                            std::to_string(cfg.regions.size()) + " regions, " +
                            std::to_string(cfg.joints.size()) + " joints (" +
-                           std::to_string(m.joint_pairs) + " node pairs tied)");
+                           std::to_string(m.joint_pairs) + " node pairs " +
+                           (cfg.contact.enabled ? "in contact)" : "tied)"));
   return m;
 }
 
@@ -144,7 +161,8 @@ dam_model_seismic_analysis(DamModel& model, const DamModelConfig& cfg,
 {
   if (cfg.concrete.kind == ConcreteModelKind::linear)
     return linear_seismic_analysis(*model.fe, cfg.seismic, model.loads(cfg),
-                                   folder, model.tie.mat());
+                                   folder, model.tie.mat(),
+                                   model.contact ? &*model.contact : nullptr);
   ConcreteBulk bulk{cfg.concrete, {}, cfg.plane, cfg.seismic.dam_regions};
   for (const Region& r : cfg.regions)
   {
@@ -174,9 +192,12 @@ nlohmann::json dam_model_results(MPI_Comm comm, const DamModelConfig& cfg,
                        {"rho", r.material.rho},
                        {"dam", r.dam}});
   summary["regions"] = regions;
-  summary["joints"] = {{"count", cfg.joints.size()},
-                       {"model", "bonded"},
-                       {"pairs", model.joint_pairs}};
+  if (cfg.contact.enabled)
+    summary["joints"]["count"] = cfg.joints.size(); // the analysis' entry
+  else
+    summary["joints"] = {{"count", cfg.joints.size()},
+                         {"model", "bonded"},
+                         {"pairs", model.joint_pairs}};
   summary["loads"] = {{"tractions", cfg.tractions.size()},
                       {"traction_history", cfg.traction_history_kind},
                       {"body_forces", cfg.body_forces.size()},

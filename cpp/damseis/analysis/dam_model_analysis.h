@@ -12,6 +12,7 @@
 #include <memory>
 #include <mpi.h>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 namespace damseis::analysis
 {
@@ -22,6 +23,8 @@ struct DamModel
 {
   std::unique_ptr<fem::ElasticModel> fe;
   dolfinx::la::petsc::Matrix tie{nullptr, false};
+  /// joints.model = "contact": the contact joints (tie: their modal stage).
+  std::optional<ContactJoints> contact;
   std::int64_t joint_pairs = 0;
   std::vector<dolfinx::la::petsc::Vector> body_forces, tractions;
   dolfinx::la::petsc::Vector initial_velocity{nullptr, false};

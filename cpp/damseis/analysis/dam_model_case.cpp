@@ -1,4 +1,5 @@
 #include "dam_model_case.h"
+#include "joint_contact_keys.h"
 #include <algorithm>
 #include <cmath>
 #include <damseis/geometry/mesh_checks.h>
@@ -351,8 +352,17 @@ input::Schema dam_model_schema()
                  "joints: the facet groups of the other faces, in the order "
                  "of side1");
   s.string("joints.model", "bonded", "-",
-           "contraction joints in a linear analysis (bonded: tied pairs)",
-           {"bonded"});
+           "contraction joints in a linear analysis: bonded (tied pairs) or "
+           "contact (Coulomb friction, no tension; 3D)",
+           {"bonded", "contact"});
+  s.real_array("joints.friction", "[]", "-",
+               "contact: friction coefficient per joint ([]: 1.0 each, the "
+               "paper's)")
+      .between(0, 100);
+  s.string_array("joints.keyed", "[]", "-",
+                 "contact: the joints (side1 groups) with shear keys: no "
+                 "sliding, opening free");
+  add_joint_contact_keys(s, "joints_active");
   s.string_array("loads.traction_groups", "[]", "-",
                  "facet groups loaded by a traction");
   s.real_array("loads.traction", "[]", "Pa",
@@ -583,6 +593,45 @@ void read_mesh(const input::Case& c, DamModelConfig& cfg)
            "Tools > Statistics, quality)");
 }
 
+/// joints.model = "contact": the joints' laws and the static stage.
+void read_joint_contact(const input::Case& c, DamModelConfig& cfg)
+{
+  JointContactConfig& jc = cfg.contact;
+  jc.enabled = c.string("joints.model") == "contact";
+  const auto friction = c.reals("joints.friction");
+  const auto keyed = c.strings("joints.keyed");
+  refuse_contact_keys_when_bonded(c, {"joints.friction", "joints.keyed"});
+  if (!jc.enabled)
+    return;
+  if (cfg.dim != 3)
+    c.fail("joints.model", "is \"contact\" for a 2D mesh",
+           "a 3D (tetrahedral) mesh for contact joints, or joints.model = "
+           "\"bonded\"");
+  if (cfg.joints.empty())
+    c.fail("joints.model", "is \"contact\" but joints.side1 is empty",
+           "the joints' facet groups in joints.side1 and joints.side2");
+  if (!friction.empty() && friction.size() != cfg.joints.size())
+    c.fail("joints.friction",
+           "has " + std::to_string(friction.size()) + " values for " +
+               std::to_string(cfg.joints.size()) + " joints",
+           "one coefficient per joint of joints.side1, or [] for 1.0");
+  jc.friction =
+      friction.empty() ? std::vector<double>(cfg.joints.size(), 1.0) : friction;
+  jc.keyed.assign(cfg.joints.size(), false);
+  check_unique(c, "joints.keyed", keyed);
+  for (const auto& k : keyed)
+  {
+    auto it = std::find_if(cfg.joints.begin(), cfg.joints.end(),
+                           [&](const auto& j) { return j.first == k; });
+    if (it == cfg.joints.end())
+      c.fail("joints.keyed", "names \"" + k + "\", which is not a joint",
+             "side1 groups of joints.side1");
+    jc.keyed[static_cast<std::size_t>(it - cfg.joints.begin())] = true;
+  }
+  jc.restitution = c.real("joints.restitution");
+  jc.statics = read_joint_statics(c);
+}
+
 /// The roles of the groups: regions, supports, reservoir, joints, loads,
 /// output faces and points; each facet group in one role, loads on the
 /// boundary.
@@ -600,6 +649,7 @@ void read_roles(const input::Case& c, DamModelConfig& cfg)
   cfg.floor = facet_groups(c, mesh, "reservoir.floor");
   cfg.joint_tolerance = 0.0;
   cfg.joints = read_joints(c, mesh, cfg.joint_tolerance);
+  read_joint_contact(c, cfg);
   cfg.faces = facet_groups(c, mesh, "output.faces");
   check_plain(c, "output.faces", cfg.faces, true); // XDMF groups "d:v"
   check_unique(c, "output.faces", cfg.faces);
@@ -753,6 +803,18 @@ DamModelConfig read_dam_model_config(const input::Case& c)
   tag_for_the_forms(cfg);
   read_dam_seismic(c, cfg);
   read_recording(c, cfg);
+  if (cfg.contact.enabled && cfg.concrete.kind != ConcreteModelKind::linear)
+    c.fail("joints.model",
+           "is \"contact\" with material.model = \"" +
+               to_string(cfg.concrete.kind) +
+               "\" (contact joints on HTC concrete are not available yet)",
+           "material.model = \"elastic\" with contact joints, or bonded "
+           "joints with the concrete model");
+  if (cfg.contact.enabled && !cfg.initial_velocity.empty())
+    c.fail("initial.velocity_groups",
+           "is given with contact joints (not available yet)",
+           "a ground motion or tractions to excite a model with contact "
+           "joints");
   return cfg;
 }
 

@@ -11,6 +11,7 @@
 #include <damseis/fem/elastic_model.h>
 #include <damseis/geometry/mesh_file.h>
 #include <damseis/input/case.h>
+#include <damseis/joint/static_contact.h>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -36,6 +37,16 @@ struct GroupVector
   std::array<double, 3> value = {0, 0, 0};
 };
 
+/// joints.model = "contact": the laws of the joints and the static stage.
+struct JointContactConfig
+{
+  bool enabled = false;
+  std::vector<double> friction; ///< per joint
+  std::vector<bool> keyed;      ///< per joint
+  double restitution = 1.0;
+  joint::StaticContactSettings statics;
+};
+
 struct DamModelConfig
 {
   /// The mesh, read and checked (collective; every rank holds its part).
@@ -53,8 +64,10 @@ struct DamModelConfig
   std::vector<std::string> fixed;  ///< facet groups with every dof fixed
   std::vector<std::string> wetted; ///< facet groups the reservoir wets
   std::vector<std::string> floor;  ///< reservoir floor (reservoir.load_floor)
-  /// Joints: (side 1, side 2) facet groups of duplicated nodes; tied.
+  /// Joints: (side 1, side 2) facet groups of duplicated nodes; tied, or
+  /// contact joints.
   std::vector<std::pair<std::string, std::string>> joints;
+  JointContactConfig contact;
   std::vector<GroupVector> tractions;   ///< times traction_history
   std::vector<double> traction_history; ///< per step, starting at 0
   std::string traction_history_kind;    ///< "step", "pulse" or a file

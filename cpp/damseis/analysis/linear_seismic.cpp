@@ -11,8 +11,12 @@
 #include <cmath>
 #include <damseis/engine/linear_stepper.h>
 #include <damseis/engine/time_history.h>
+#include <damseis/fem/facet_dofs.h>
 #include <damseis/fem/tied_dofs.h>
 #include <damseis/geometry/tags.h>
+#include <damseis/joint/contact_stepper.h>
+#include <damseis/joint/joint_recorder.h>
+#include <damseis/linalg/all_gather.h>
 #include <damseis/linalg/modal.h>
 #include <damseis/linalg/petsc_vectors.h>
 #include <damseis/results/face_points.h>
@@ -24,6 +28,7 @@
 #include <dolfinx/mesh/MeshTags.h>
 #include <fstream>
 #include <functional>
+#include <numbers>
 #include <optional>
 #include <sstream>
 
@@ -38,12 +43,14 @@ using Clock = std::chrono::steady_clock;
 
 /// The linear analysis: K and M (reduced to the tied unknowns with ties),
 /// Newmark with the effective matrix factorised once, stresses B u at the
-/// stress points.
+/// stress points. With contact joints: K and M on all dofs, the static stage
+/// and the time history with contact (total state), the joint outputs.
 class LinearSeismicAnalysis : public SeismicAnalysis
 {
 public:
   LinearSeismicAnalysis(fem::ElasticModel& fe, const SeismicSettings& s,
-                        const ModelLoads& loads, RunFolder folder, Mat tie);
+                        const ModelLoads& loads, RunFolder folder, Mat tie,
+                        const ContactJoints* contact);
   void modal_stage() override;
   void static_stage() override;
   void time_history() override;
@@ -54,24 +61,34 @@ private:
 
   /// The initial state of a run with an initial velocity.
   engine::InitialState initial_state();
+  /// The modal stage of a model with contact joints: on the joints closed.
+  void modal_stage_closed_joints();
+  /// The faces of the output settings as pair faces (joint tables).
+  std::vector<joint::PairFace> pair_faces() const;
 
   fem::ElasticModel& _fe;
   const SeismicSettings& _s;
   const ModelLoads _loads;
   RunFolder _folder;
   Mat _tie;
+  const ContactJoints* _contact; ///< null: no contact joints
+  Mat _modal_tie = nullptr;      ///< with contact: the joints bonded
+  std::optional<joint::PairSet> _pairs;
+  std::optional<joint::StaticContactResult> _static_contact;
   MPI_Comm _comm;
   const Clock::time_point _wall_start = Clock::now();
   const fem::Reservoir* _added = nullptr; ///< Westergaard added mass
   Matrix _K{nullptr, false}, _M{nullptr, false}, _B{nullptr, false};
   /// Static load and solution, static stresses (system layout).
-  Vector _F{nullptr, false}, _u_static{nullptr, false},
+  Vector _F{nullptr, false}, _F_g{nullptr, false}, _u_static{nullptr, false},
       _s_static{nullptr, false};
   std::optional<ModalResult> _modal;
   double _static_seconds = 0.0;
 
   // The time history's parts and its report.
-  std::unique_ptr<engine::LinearStepper> _stepper;
+  std::unique_ptr<engine::Stepper> _stepper;
+  joint::ContactStepper* _contact_stepper = nullptr; ///< _stepper, if contact
+  std::unique_ptr<joint::JointRecorder> _joints;
   std::unique_ptr<FullDisplacement> _u;
   std::unique_ptr<StressRecorder> _stresses;
   std::unique_ptr<PointHistories> _points;
@@ -89,20 +106,32 @@ private:
 LinearSeismicAnalysis::LinearSeismicAnalysis(fem::ElasticModel& fe,
                                              const SeismicSettings& s,
                                              const ModelLoads& loads,
-                                             RunFolder folder, Mat tie)
-    : _fe(fe), _s(s), _loads(loads), _folder(std::move(folder)), _tie(tie),
-      _comm(fe.mesh()->comm())
+                                             RunFolder folder, Mat tie,
+                                             const ContactJoints* contact)
+    : _fe(fe), _s(s), _loads(loads), _folder(std::move(folder)),
+      _tie(contact ? nullptr : tie), _contact(contact),
+      _modal_tie(contact ? tie : nullptr), _comm(fe.mesh()->comm())
 {
   results::set_stage("assembly");
   print_model_line(fe, "");
   // The system (all dofs, or the tied unknowns u_r with u = P u_r) and the
   // static load: dead weight, hydrostatic pressure, the extra loads.
   SeismicSystem sys =
-      assemble_seismic_system(fe, s, loads.static_loads, tie, false);
+      assemble_seismic_system(fe, s, loads.static_loads, _tie, false);
   _added = sys.added;
   _K = std::move(sys.K);
   _M = std::move(sys.M);
   _F = std::move(sys.F_static);
+  _F_g = std::move(sys.F_g);
+  if (_contact)
+  {
+    _pairs = joint::joint_pairs(*fe.V(), *_contact->facet_tags,
+                                _contact->joints, _contact->tolerance);
+    results::print(
+        _comm, "contact joints: " + std::to_string(_contact->joints.size()) +
+                   " joints, " + std::to_string(_pairs->size()) +
+                   " node pairs");
+  }
   _u_static = linalg::column_vector(_K.mat());
   _static_seconds = seconds_since(_wall_start);
 }
@@ -110,6 +139,8 @@ LinearSeismicAnalysis::LinearSeismicAnalysis(fem::ElasticModel& fe,
 void LinearSeismicAnalysis::modal_stage()
 {
   results::set_stage("static stage and modal analysis");
+  if (_contact)
+    return modal_stage_closed_joints();
   Matrix M0 = dry_mass(_fe, _added, _tie);
   // K u = F is solved with the modal analysis' factors of K.
   _modal = modal_and_damping(
@@ -118,9 +149,31 @@ void LinearSeismicAnalysis::modal_stage()
   _static_seconds += _modal->with_K_factors_seconds;
 }
 
+void LinearSeismicAnalysis::modal_stage_closed_joints()
+{
+  Matrix K(fem::reduce_to_tied(_K.mat(), _modal_tie), false);
+  Matrix M(fem::reduce_to_tied(_M.mat(), _modal_tie), false);
+  Matrix M0 = dry_mass(_fe, _added, _modal_tie);
+  _modal = modal_and_damping(K.mat(), M.mat(), _added ? M0.mat() : nullptr, _s,
+                             nullptr);
+}
+
 void LinearSeismicAnalysis::static_stage()
 {
-  if (!_modal)
+  if (_contact)
+  {
+    // Dead weight (with the joints active, or on the cantilevers alone),
+    // then the rest of the static load in increments, with contact.
+    const auto t0 = Clock::now();
+    const double omega_1 =
+        2.0 * std::numbers::pi * _modal->modes.frequencies_hz.front();
+    _static_contact =
+        joint::static_contact(_K.mat(), _M.mat(), omega_1, _F_g.vec(), _F.vec(),
+                              *_pairs, _contact->statics);
+    VecCopy(_static_contact->u.vec(), _u_static.vec());
+    _static_seconds += seconds_since(t0);
+  }
+  else if (!_modal)
     throw std::logic_error("the linear static stage uses the modal stage's "
                            "factors: call modal_stage() first");
   // The static stresses at the stress points.
@@ -140,17 +193,42 @@ void LinearSeismicAnalysis::time_history()
   // Displacement relative to the base under the ground acceleration,
   // M a + C v + K u = -M sum_c r_c a_gc(t). The added mass multiplies the
   // total acceleration, so it is part of M here.
-  _stepper = std::make_unique<engine::LinearStepper>(
-      _M.mat(), _K.mat(), _modal->damping, _s.scheme, _s.factorization);
-  const GroundMotionLoad ground(_fe, _s, _M.mat(), _tie);
+  // With contact the state is total: the static solution is the initial
+  // displacement and the static load is sustained.
+  if (_contact)
+  {
+    auto contact = std::make_shared<joint::CondensedContact>(*_pairs);
+    const joint::StaticContactResult& st = *_static_contact;
+    contact->set_state(st.g0, st.w, st.p, st.states);
+    auto stepper = std::make_unique<joint::ContactStepper>(
+        _M.mat(), _K.mat(), _modal->damping, _s.scheme, contact,
+        _u_static.vec(), _contact->restitution);
+    _contact_stepper = stepper.get();
+    _stepper = std::move(stepper);
+  }
+  else
+  {
+    _stepper = std::make_unique<engine::LinearStepper>(
+        _M.mat(), _K.mat(), _modal->damping, _s.scheme, _s.factorization);
+  }
+  const GroundMotionLoad ground(_fe, _s, _M.mat(), _tie,
+                                _contact ? _F.vec() : nullptr);
   // Tractions with their histories on top of the ground motion's load.
   const LoadWithTimedTerms load(ground, _loads.timed, _tie);
 
   // Outputs: every input check has passed by now.
   open_run_folder(_comm, _folder);
   _u = std::make_unique<FullDisplacement>(*_stepper, _tie);
+  Vector mode = linalg::row_vector(_modal_tie ? _modal_tie : _K.mat());
   write_modes(
-      _fe, _modal->modes, [&](Vec x) { return _u->full(x); },
+      _fe, _modal->modes,
+      [&](Vec x)
+      {
+        if (!_modal_tie)
+          return _u->full(x);
+        MatMult(_modal_tie, x, mode.vec());
+        return mode.vec();
+      },
       _folder.dir / "modes.xdmf");
 
   engine::TimeHistory history(
@@ -184,10 +262,12 @@ void LinearSeismicAnalysis::add_recorders(engine::TimeHistory& history)
                               region_cells(_fe.model(), _s.dam_regions)),
       [this]() -> std::span<const double>
       {
-        if (_s.stress_total)
-          MatMultAdd(_B.mat(), _stepper->u(), _s_static.vec(), _s_field.vec());
-        else
-          MatMult(_B.mat(), _stepper->u(), _s_field.vec());
+        // The state is dynamic (relative to the static one), or total with
+        // contact; the output is what stress_total asks for.
+        const bool total_state = _contact != nullptr;
+        MatMult(_B.mat(), _stepper->u(), _s_field.vec());
+        if (_s.stress_total != total_state)
+          VecAXPY(_s_field.vec(), total_state ? -1.0 : 1.0, _s_static.vec());
         linalg::read_owned_values(_s_field.vec(), _s_values);
         return _s_values;
       });
@@ -209,17 +289,21 @@ void LinearSeismicAnalysis::add_recorders(engine::TimeHistory& history)
       _fe, _folder.dir, _s.output_every,
       [this]
       {
+        const bool total_state = _contact != nullptr;
         VecCopy(_u->vec(), _u_out.vec());
-        if (_s.stress_total)
-          VecAXPY(_u_out.vec(), 1.0, _u_static_full.vec());
+        if (_s.stress_total != total_state)
+          VecAXPY(_u_out.vec(), total_state ? -1.0 : 1.0, _u_static_full.vec());
         return _u_out.vec();
       },
       *_stresses);
 
   // Displacement, velocity, acceleration and stress at the named points,
   // means over the named groups.
-  _named = std::make_unique<NamedHistories>(_comm, *_fe.V(), _s, *_stepper, *_u,
-                                            *_stresses, nullptr);
+  // (With contact the state is total: the static displacement is taken off
+  // so that the histories are the seismic ones, as in every analysis.)
+  _named = std::make_unique<NamedHistories>(
+      _comm, *_fe.V(), _s, *_stepper, *_u, *_stresses,
+      _contact ? _u_static_full.vec() : nullptr);
   for (engine::Observer* o : std::initializer_list<engine::Observer*>{
            _u.get(), _stresses.get(), _points.get()})
     history.observe(*o);
@@ -227,6 +311,30 @@ void LinearSeismicAnalysis::add_recorders(engine::TimeHistory& history)
   if (_face_u)
     history.observe(*_face_u);
   history.observe(*_fields);
+  if (_contact_stepper)
+  {
+    _joints = std::make_unique<joint::JointRecorder>(*_contact_stepper,
+                                                     _static_contact->w);
+    history.observe(*_joints);
+  }
+}
+
+std::vector<joint::PairFace> LinearSeismicAnalysis::pair_faces() const
+{
+  std::vector<joint::PairFace> faces;
+  const auto& tags = _s.face_tags ? *_s.face_tags : *_fe.model().facet_tags;
+  const auto& map = *_fe.V()->dofmap()->index_map;
+  for (const auto& [name, face_tags] : _s.faces)
+  {
+    std::vector<std::int64_t> mine;
+    for (int tag : face_tags)
+      for (std::int32_t b : fem::owned_blocks_on(*_fe.V(), tags, tag))
+        mine.push_back(map.local_range()[0] + b);
+    joint::PairFace f{name, linalg::all_gather(_comm, mine)};
+    std::sort(f.blocks.begin(), f.blocks.end());
+    faces.push_back(std::move(f));
+  }
+  return faces;
 }
 
 json LinearSeismicAnalysis::results()
@@ -238,9 +346,9 @@ json LinearSeismicAnalysis::results()
   // Crest history relative to the base point.
   const auto crest_static = _points->crest().value_on_all(_u_static_full.vec());
   const auto base_static = _points->base().value_on_all(_u_static_full.vec());
-  const json crest_summary =
-      write_crest_history(_comm, hist, dim, _s.steps, _s.scheme.dt,
-                          crest_static, base_static, false, dir / "crest.csv");
+  const json crest_summary = write_crest_history(
+      _comm, hist, dim, _s.steps, _s.scheme.dt, crest_static, base_static,
+      _contact != nullptr, dir / "crest.csv");
 
   const auto& envelope = _stresses->envelope();
   results::write_envelopes(_fe, envelope,
@@ -256,6 +364,18 @@ json LinearSeismicAnalysis::results()
        _run.loop_seconds, _run.restarted_from_step});
   summary.update(crest_summary);
   _named->write(_comm, dir, summary);
+  if (_joints)
+  {
+    summary["joints"] = _joints->write(_comm, dir, pair_faces());
+    summary["joints"]["static_stage"] = {
+        {"dead_load", _contact->statics.cantilever_dead_load
+                          ? "cantilevers (joints disconnected)"
+                          : "joints active"},
+        {"increments", _contact->statics.increments},
+        {"mass_shift_per_s2", _static_contact->shift},
+        {"ncp_iterations", _static_contact->totals.ncp_iterations}};
+    summary["joints"]["restitution"] = _contact->restitution;
+  }
   summary["wall_seconds"] = seconds_since(_wall_start);
   print_summary_line(_comm, summary);
   return summary;
@@ -265,9 +385,13 @@ json LinearSeismicAnalysis::results()
 std::unique_ptr<SeismicAnalysis>
 linear_seismic_analysis(fem::ElasticModel& fe, const SeismicSettings& s,
                         const ModelLoads& loads, const RunFolder& folder,
-                        Mat tie)
+                        Mat tie, const ContactJoints* contact)
 {
-  return std::make_unique<LinearSeismicAnalysis>(fe, s, loads, folder, tie);
+  if (contact && !tie)
+    throw std::invalid_argument("contact joints need the tie of the same "
+                                "joints for the modal stage");
+  return std::make_unique<LinearSeismicAnalysis>(fe, s, loads, folder, tie,
+                                                 contact);
 }
 } // namespace damseis::analysis
 

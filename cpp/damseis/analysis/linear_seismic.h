@@ -9,6 +9,8 @@
 #include "seismic_settings.h"
 #include "timed_loads.h"
 #include <damseis/fem/elastic_model.h>
+#include <damseis/joint/pairs.h>
+#include <damseis/joint/static_contact.h>
 #include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -25,6 +27,19 @@ struct ModelLoads
   Vec initial_velocity = nullptr; ///< full space; null: at rest
 };
 
+/// Contraction joints with Coulomb friction (joint/): the time history
+/// runs on all dofs with the pairs' contact condensed onto them, from the
+/// static stage with contact; the state is total (contact is not additive).
+struct ContactJoints
+{
+  std::vector<joint::JointSpec> joints;
+  /// The facet tags the joints' tags refer to.
+  const dolfinx::mesh::MeshTags<std::int32_t>* facet_tags = nullptr;
+  double restitution = 1.0; ///< impact correction: e in [0, 1]
+  joint::StaticContactSettings statics;
+  double tolerance = 1e-8; ///< coincidence of the pair nodes [m]
+};
+
 /// The analysis on `fe` (materials and fixed boundaries already set)
 /// that writes into `folder.dir` (created): summary.json, crest.csv,
 /// fields.xdmf, envelopes.xdmf, modes.xdmf, face_<name>.csv, case_used.toml.
@@ -37,7 +52,10 @@ struct ModelLoads
 /// at the end of the current step and throws engine::Interrupted.
 ///
 /// `tie` (optional, from fem::tie_prolongation) ties coincident dofs
-/// (bonded joints): the system is solved for u_r with u = P u_r.
+/// (bonded joints): the system is solved for u_r with u = P u_r. With
+/// `contact`, the joints it lists are contact joints instead and `tie` (the
+/// same joints bonded) serves the modal stage only: the natural
+/// frequencies and the Rayleigh damping are those of the closed joints.
 /// `loads`: the static loads are added to the static stage, the timed ones
 /// to the ground motion's in the time history; with an initial velocity
 /// the initial acceleration satisfies M a = f - C v (at the dofs with
@@ -45,7 +63,8 @@ struct ModelLoads
 std::unique_ptr<SeismicAnalysis>
 linear_seismic_analysis(fem::ElasticModel& fe, const SeismicSettings& settings,
                         const ModelLoads& loads, const RunFolder& folder,
-                        Mat tie = nullptr);
+                        Mat tie = nullptr,
+                        const ContactJoints* contact = nullptr);
 
 /// All phases of that analysis; returns the summary.
 inline nlohmann::json run_linear_seismic(fem::ElasticModel& fe,

@@ -159,8 +159,8 @@ NcpReport solve_ncp(const ContactProblem& c, const Eigen::VectorXd& p0,
     // The direction d (and dw = W d), by the reduced system or densely.
     Eigen::VectorXd d, dw;
     Eigen::MatrixXd J;
-    bool found = reduced && reduced_direction(c, blocks, F, d, dw,
-                                              rep.reduced_rows);
+    bool found =
+        reduced && reduced_direction(c, blocks, F, d, dw, rep.reduced_rows);
     if (!found)
     {
       J = dense_jacobian(c, blocks);

@@ -19,9 +19,9 @@ struct ContactProblem
   /// once, and the dense system couples only the rows of open and sliding
   /// pairs (small when most pairs stick); the line search moves w along z.
   Eigen::MatrixXd W_inv;
-  Eigen::VectorXd w_free;    ///< 3n: (w_n, w_a, w_b) per pair without force
-  Eigen::VectorXd wT_old;    ///< 2n: the tangential w of the last step
-  Eigen::VectorXd g0;        ///< n: initial gaps (0: closed joints)
+  Eigen::VectorXd w_free; ///< 3n: (w_n, w_a, w_b) per pair without force
+  Eigen::VectorXd wT_old; ///< 2n: the tangential w of the last step
+  Eigen::VectorXd g0;     ///< n: initial gaps (0: closed joints)
 };
 
 struct NcpSettings

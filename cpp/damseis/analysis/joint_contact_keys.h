@@ -1,0 +1,26 @@
+// The case keys of contact joints that every demo with joints shares:
+// restitution of the impact correction and the static stage (how the dead
+// weight is carried, the increments of the rest of the static load). The
+// demos add their own keys for which joints and their friction.
+#pragma once
+
+#include <damseis/input/case.h>
+#include <damseis/joint/static_contact.h>
+#include <string>
+#include <vector>
+
+namespace damseis::analysis
+{
+/// joints.restitution, joints.dead_load (default `dead_load_default`),
+/// joints.static_increments.
+void add_joint_contact_keys(input::Schema& s,
+                            const std::string& dead_load_default);
+
+/// The static stage's settings of the keys above.
+joint::StaticContactSettings read_joint_statics(const input::Case& c);
+
+/// Fails (input::InputError) if one of `keys` (the contact keys above and
+/// the demo's own) is given while joints.model is not "contact".
+void refuse_contact_keys_when_bonded(const input::Case& c,
+                                     const std::vector<std::string>& keys);
+} // namespace damseis::analysis

@@ -1,0 +1,300 @@
+#include "condensed_contact.h"
+#include <chrono>
+#include <damseis/dynamics/nonlinear_newmark.h>
+#include <map>
+#include <petscblaslapack.h>
+#include <sstream>
+#include <stdexcept>
+
+namespace damseis::joint
+{
+namespace
+{
+double seconds_since(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
+      .count();
+}
+
+/// Cholesky factorisation of the symmetric positive definite A in place
+/// (lower triangle; LAPACK).
+void cholesky(Eigen::MatrixXd& A)
+{
+  const PetscBLASInt n = static_cast<PetscBLASInt>(A.rows());
+  PetscBLASInt info = 0;
+  LAPACKpotrf_("L", &n, A.data(), &n, &info);
+  if (info != 0)
+  {
+    throw NotPositiveDefinite(
+        "the Schur complement of the joint pairs is not positive definite "
+        "(LAPACK potrf info " +
+        std::to_string(info) + ")");
+  }
+}
+
+/// The inverse of the symmetric positive definite A (LAPACK potrf, potri).
+Eigen::MatrixXd spd_inverse(Eigen::MatrixXd A)
+{
+  cholesky(A);
+  const PetscBLASInt n = static_cast<PetscBLASInt>(A.rows());
+  PetscBLASInt info = 0;
+  LAPACKpotri_("L", &n, A.data(), &n, &info);
+  A.triangularView<Eigen::StrictlyUpper>() = A.transpose();
+  return A;
+}
+
+/// X <- A^-1 X with A's Cholesky factor L (LAPACK).
+void cholesky_solve(const Eigen::MatrixXd& L, double* X, Eigen::Index columns)
+{
+  const PetscBLASInt n = static_cast<PetscBLASInt>(L.rows());
+  const PetscBLASInt m = static_cast<PetscBLASInt>(columns);
+  PetscBLASInt info = 0;
+  LAPACKpotrs_("L", &n, &m, L.data(), &n, X, &n, &info);
+}
+} // namespace
+
+CondensedContact::CondensedContact(PairSet pairs, contact::NcpSettings ncp)
+    : _pairs(std::move(pairs)), _ncp(ncp)
+{
+  const std::size_t n = _pairs.size();
+  std::map<std::int64_t, int> position;
+  auto place = [&](std::int64_t block)
+  {
+    auto [it, fresh] =
+        position.try_emplace(block, static_cast<int>(_unknowns.size()));
+    if (fresh)
+    {
+      for (int k = 0; k < 3; ++k)
+        _unknowns.push_back(static_cast<PetscInt>(3 * block + k));
+    }
+    return it->second;
+  };
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    _pos1.push_back(place(_pairs.block1[i]));
+    _pos2.push_back(place(_pairs.block2[i]));
+  }
+  _p = _w = Eigen::VectorXd::Zero(3 * n);
+  _g0 = Eigen::VectorXd::Zero(n);
+  _wT_ref = Eigen::VectorXd::Zero(2 * n);
+  _states.assign(n, contact::PairState::stick);
+}
+
+Eigen::VectorXd CondensedContact::relative(const Eigen::VectorXd& x_s) const
+{
+  const std::size_t n = _pairs.size();
+  Eigen::VectorXd w(3 * n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    w.segment<3>(3 * i) = _pairs.frame[i].transpose() *
+                          (x_s.segment<3>(_pos2[i]) - x_s.segment<3>(_pos1[i]));
+  }
+  return w;
+}
+
+Eigen::VectorXd CondensedContact::pair_forces(const Eigen::VectorXd& p) const
+{
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(_unknowns.size());
+  for (std::size_t i = 0; i < _pairs.size(); ++i)
+  {
+    const Eigen::Vector3d fi = _pairs.frame[i] * p.segment<3>(3 * i);
+    f.segment<3>(_pos2[i]) += fi;
+    f.segment<3>(_pos1[i]) -= fi;
+  }
+  return f;
+}
+
+void CondensedContact::factorize(Mat K_eff)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  _comm = PetscObjectComm(reinterpret_cast<PetscObject>(K_eff));
+  MPI_Comm_rank(_comm, &_rank);
+  _schur = std::make_unique<linalg::SchurSolver>(K_eff, _unknowns);
+  const auto t1 = std::chrono::steady_clock::now();
+  // S = L L^T; Y = S^-1 G; W = G^T Y, assembled pair by pair (rank 0; the
+  // outcome of the Cholesky factorisation to every rank).
+  std::string failure;
+  if (_rank == 0)
+  {
+    try
+    {
+      _L = _schur->schur_complement();
+      cholesky(_L);
+      set_up_flexibility();
+    }
+    catch (const NotPositiveDefinite& e)
+    {
+      failure = e.what();
+    }
+  }
+  int failed = failure.empty() ? 0 : 1;
+  MPI_Bcast(&failed, 1, MPI_INT, 0, _comm);
+  if (failed)
+    throw NotPositiveDefinite(_rank == 0 ? failure
+                                         : "the Schur complement of the joint "
+                                           "pairs is not positive definite");
+  _totals.seconds_setup += seconds_since(t1);
+  _factor_seconds += seconds_since(t0);
+}
+
+void CondensedContact::set_up_flexibility()
+{
+  const std::size_t n = _pairs.size();
+  _Y = Eigen::MatrixXd::Zero(_L.rows(), 3 * n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    _Y.block<3, 3>(_pos2[i], 3 * i) += _pairs.frame[i];
+    _Y.block<3, 3>(_pos1[i], 3 * i) -= _pairs.frame[i];
+  }
+  cholesky_solve(_L, _Y.data(), _Y.cols());
+  Eigen::MatrixXd W(3 * n, 3 * n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    W.middleRows<3>(3 * i) =
+        _pairs.frame[i].transpose() *
+        (_Y.middleRows<3>(_pos2[i]) - _Y.middleRows<3>(_pos1[i]));
+  }
+  _problem.W = 0.5 * (W + W.transpose());
+  // W^-1: Newton directions through z = W d, the dense system on the open
+  // and sliding pairs' rows only (contact/ncp.h).
+  _problem.W_inv = spd_inverse(_problem.W);
+  _problem.laws.clear();
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    contact::PairLaw law = _pairs.law(i);
+    law.r_n = 1.0 / _problem.W(3 * i, 3 * i);
+    law.r_t = 2.0 / (_problem.W(3 * i + 1, 3 * i + 1) +
+                     _problem.W(3 * i + 2, 3 * i + 2));
+    _problem.laws.push_back(law);
+  }
+}
+
+contact::NcpReport CondensedContact::solve_pairs(const Eigen::VectorXd& y,
+                                                 Eigen::VectorXd& x_s)
+{
+  Eigen::VectorXd x0 = y;
+  cholesky_solve(_L, x0.data(), 1);
+  _problem.w_free = relative(x0);
+  _problem.wT_old = _wT_ref;
+  _problem.g0 = _g0;
+  contact::NcpReport rep = contact::solve_ncp(_problem, _p, _ncp);
+  x_s = x0 + _Y * rep.p;
+  return rep;
+}
+
+void CondensedContact::solve(Vec rhs, Vec u, Vec r)
+{
+  if (!_schur)
+    throw std::logic_error("CondensedContact::solve before factorize");
+  const std::size_t n = _pairs.size();
+  auto t0 = std::chrono::steady_clock::now();
+  Eigen::VectorXd y, x_s;
+  _schur->condense(rhs, y);
+  _totals.seconds_bulk += seconds_since(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  // The pair problem on rank 0; its outcome to every rank.
+  std::vector<double> outcome(3 * n * 2 + n + 6, 0.0);
+  if (_rank == 0)
+  {
+    const contact::NcpReport rep = solve_pairs(y, x_s);
+    Eigen::Map<Eigen::VectorXd>(outcome.data(), 3 * n) = rep.p;
+    Eigen::Map<Eigen::VectorXd>(outcome.data() + 3 * n, 3 * n) = rep.w;
+    for (std::size_t i = 0; i < n; ++i)
+      outcome[6 * n + i] = static_cast<double>(rep.states[i]);
+    double* tail = outcome.data() + 7 * n;
+    tail[0] = rep.converged ? 1.0 : 0.0;
+    tail[1] = rep.iterations;
+    tail[2] = rep.line_search_steps;
+    tail[3] = rep.gradient_steps;
+    tail[4] = rep.residual;
+  }
+  MPI_Bcast(outcome.data(), static_cast<int>(outcome.size()), MPI_DOUBLE, 0,
+            _comm);
+  const double* tail = outcome.data() + 7 * n;
+  _totals.ncp_iterations += static_cast<long>(tail[1]);
+  _totals.line_search_steps += static_cast<long>(tail[2]);
+  _totals.gradient_steps += static_cast<long>(tail[3]);
+  if (tail[0] != 1.0)
+  {
+    std::ostringstream msg;
+    msg << "the joint contact problem did not converge (" << n
+        << " pairs, residual " << tail[4] << " after "
+        << static_cast<int>(tail[1]) << " Newton iterations)";
+    throw dynamics::StepFailure(msg.str());
+  }
+  _p = Eigen::Map<const Eigen::VectorXd>(outcome.data(), 3 * n);
+  _w = Eigen::Map<const Eigen::VectorXd>(outcome.data() + 3 * n, 3 * n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const auto s = static_cast<contact::PairState>(outcome[6 * n + i]);
+    _totals.state_changes += s != _states[i];
+    _states[i] = s;
+    _wT_ref.segment<2>(2 * i) = _w.segment<2>(3 * i + 1);
+  }
+  _totals.seconds_contact += seconds_since(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  _schur->expand(x_s, u);
+  // r = G p on the pair nodes' unknowns.
+  VecSet(r, 0.0);
+  if (_rank == 0)
+  {
+    const Eigen::VectorXd f = pair_forces(_p);
+    VecSetValues(r, static_cast<PetscInt>(_unknowns.size()), _unknowns.data(),
+                 f.data(), ADD_VALUES);
+  }
+  VecAssemblyBegin(r);
+  VecAssemblyEnd(r);
+  _totals.seconds_bulk += seconds_since(t0);
+  ++_totals.solves;
+}
+
+void CondensedContact::solve_free(Vec rhs, Vec u)
+{
+  if (!_schur)
+    throw std::logic_error("CondensedContact::solve_free before factorize");
+  Eigen::VectorXd y;
+  _schur->condense(rhs, y);
+  if (_rank == 0)
+    cholesky_solve(_L, y.data(), 1);
+  _schur->expand(y, u);
+}
+
+Eigen::VectorXd CondensedContact::relative_of(Vec u) const
+{
+  // Not on the hot path: the pair unknowns gathered by value.
+  std::vector<double> local(_unknowns.size(), 0.0);
+  PetscInt lo = 0, hi = 0;
+  VecGetOwnershipRange(u, &lo, &hi);
+  const double* a = nullptr;
+  VecGetArrayRead(u, &a);
+  for (std::size_t k = 0; k < _unknowns.size(); ++k)
+    if (_unknowns[k] >= lo && _unknowns[k] < hi)
+      local[k] = a[_unknowns[k] - lo];
+  VecRestoreArrayRead(u, &a);
+  Eigen::VectorXd x_s(static_cast<Eigen::Index>(_unknowns.size()));
+  MPI_Allreduce(local.data(), x_s.data(), static_cast<int>(local.size()),
+                MPI_DOUBLE, MPI_SUM,
+                PetscObjectComm(reinterpret_cast<PetscObject>(u)));
+  return relative(x_s);
+}
+
+void CondensedContact::set_state(const Eigen::VectorXd& g0,
+                                 const Eigen::VectorXd& w,
+                                 const Eigen::VectorXd& p,
+                                 const std::vector<contact::PairState>& states)
+{
+  const std::size_t n = _pairs.size();
+  if (g0.size() != static_cast<Eigen::Index>(n) ||
+      w.size() != static_cast<Eigen::Index>(3 * n) ||
+      p.size() != static_cast<Eigen::Index>(3 * n) || states.size() != n)
+    throw std::invalid_argument("CondensedContact::set_state: sizes");
+  _g0 = g0;
+  _w = w;
+  _p = p;
+  _states = states;
+  for (std::size_t i = 0; i < n; ++i)
+    _wT_ref.segment<2>(2 * i) = w.segment<2>(3 * i + 1);
+}
+} // namespace damseis::joint

@@ -1,0 +1,210 @@
+#include "joint_recorder.h"
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+namespace damseis::joint
+{
+namespace
+{
+constexpr int step_columns = 5;
+
+/// The largest of `value` over the pairs of joint j that are on `face`
+/// (all pairs if face is null), with its pair index (-1: none).
+std::pair<double, int> largest(const PairSet& pairs, std::size_t j,
+                               const std::vector<double>& value,
+                               const PairFace* face)
+{
+  std::pair<double, int> best{0.0, -1};
+  for (std::size_t i = 0; i < pairs.size(); ++i)
+  {
+    if (pairs.joint[i] != static_cast<int>(j))
+      continue;
+    if (face && !std::binary_search(face->blocks.begin(), face->blocks.end(),
+                                    pairs.block1[i]))
+      continue;
+    if (best.second < 0 || value[i] > best.first)
+      best = {value[i], static_cast<int>(i)};
+  }
+  return best;
+}
+
+std::string cm(double metres)
+{
+  char s[32];
+  std::snprintf(s, sizeof s, "%.2f", 100.0 * metres);
+  return s;
+}
+} // namespace
+
+JointRecorder::JointRecorder(const ContactStepper& stepper,
+                             Eigen::VectorXd w_static)
+    : _stepper(stepper), _w_static(std::move(w_static))
+{
+  const std::size_t n = stepper.contact().pairs().size();
+  _open.assign(n, 0.0);
+  _t_open.assign(n, 0.0);
+  _slide.assign(n, 0.0);
+  _t_slide.assign(n, 0.0);
+}
+
+void JointRecorder::record(int, double t)
+{
+  const CondensedContact& c = _stepper.contact();
+  const Eigen::VectorXd& w = c.relative_displacement();
+  int open = 0, sliding = 0;
+  double widest = 0.0;
+  for (std::size_t i = 0; i < _open.size(); ++i)
+  {
+    const double gap = std::max(c.gap(i), 0.0);
+    const double slide =
+        (w.segment<2>(3 * i + 1) - _w_static.segment<2>(3 * i + 1)).norm();
+    // A new largest value (by more than round-off: the time is when the
+    // plateau is reached).
+    if (gap > _open[i] * (1.0 + 1e-9) + 1e-15)
+    {
+      _open[i] = gap;
+      _t_open[i] = t;
+    }
+    if (slide > _slide[i] * (1.0 + 1e-9) + 1e-15)
+    {
+      _slide[i] = slide;
+      _t_slide[i] = t;
+    }
+    open += c.states()[i] == contact::PairState::open;
+    sliding += c.states()[i] == contact::PairState::slip;
+    widest = std::max(widest, gap);
+  }
+  _steps.insert(_steps.end(),
+                {t, static_cast<double>(open), static_cast<double>(sliding),
+                 widest, static_cast<double>(_stepper.last_ncp_iterations())});
+}
+
+void JointRecorder::save(engine::Arrays& arrays) const
+{
+  arrays["joint_open"] = _open;
+  arrays["joint_t_open"] = _t_open;
+  arrays["joint_slide"] = _slide;
+  arrays["joint_t_slide"] = _t_slide;
+  arrays["joint_steps"] = _steps;
+}
+
+void JointRecorder::restore(const engine::CheckpointData& data)
+{
+  const std::size_t n = _open.size();
+  _open = engine::checkpoint_array(data, "joint_open", n);
+  _t_open = engine::checkpoint_array(data, "joint_t_open", n);
+  _slide = engine::checkpoint_array(data, "joint_slide", n);
+  _t_slide = engine::checkpoint_array(data, "joint_t_slide", n);
+  _steps = engine::checkpoint_array(data, "joint_steps");
+  if (_steps.size() % step_columns != 0)
+    throw std::runtime_error("checkpoint array joint_steps is damaged");
+}
+
+nlohmann::json JointRecorder::write(MPI_Comm comm,
+                                    const std::filesystem::path& dir,
+                                    const std::vector<PairFace>& faces) const
+{
+  const PairSet& pairs = _stepper.contact().pairs();
+  nlohmann::json table = nlohmann::json::array();
+  for (std::size_t j = 0; j < pairs.joints.size(); ++j)
+  {
+    nlohmann::json row = {{"joint", pairs.joints[j].label}};
+    auto entry = [&](const std::string& key, const std::vector<double>& value,
+                     const std::vector<double>& time, const PairFace* face)
+    {
+      const auto [v, i] = largest(pairs, j, value, face);
+      if (i < 0)
+        return;
+      row[key] = {{"cm", 100.0 * v}, {"t_s", time[i]}, {"x", pairs.x[i]}};
+    };
+    entry("opening", _open, _t_open, nullptr);
+    entry("sliding", _slide, _t_slide, nullptr);
+    for (const PairFace& f : faces)
+    {
+      entry("opening_" + f.name, _open, _t_open, &f);
+      entry("sliding_" + f.name, _slide, _t_slide, &f);
+    }
+    table.push_back(row);
+  }
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  if (rank == 0)
+  {
+    std::ofstream p(dir / "joint_pairs.csv");
+    p << "joint,x,y,z,max_opening_cm,t_opening_s,max_sliding_cm,"
+         "t_sliding_s\n";
+    for (std::size_t i = 0; i < pairs.size(); ++i)
+    {
+      p << pairs.joints[pairs.joint[i]].label << "," << pairs.x[i][0] << ","
+        << pairs.x[i][1] << "," << pairs.x[i][2] << "," << 100.0 * _open[i]
+        << "," << _t_open[i] << "," << 100.0 * _slide[i] << "," << _t_slide[i]
+        << "\n";
+    }
+    std::ofstream s(dir / "joint_steps.csv");
+    s << "t_s,pairs_open,pairs_sliding,widest_opening_cm,ncp_iterations\n";
+    for (std::size_t k = 0; k < _steps.size(); k += step_columns)
+    {
+      s << _steps[k] << "," << _steps[k + 1] << "," << _steps[k + 2] << ","
+        << 100.0 * _steps[k + 3] << "," << _steps[k + 4] << "\n";
+    }
+    // The tables: joints as rows; opening and sliding, overall and per face.
+    std::vector<std::string> columns = {"opening"};
+    for (const PairFace& f : faces)
+      columns.push_back("opening_" + f.name);
+    columns.push_back("sliding");
+    for (const PairFace& f : faces)
+      columns.push_back("sliding_" + f.name);
+    std::ofstream csv(dir / "joint_table.csv"), md(dir / "joint_table.md");
+    csv << "joint";
+    md << "| joint |";
+    for (const auto& c : columns)
+    {
+      csv << "," << c << "_cm";
+      md << " max " << c << " [cm] |";
+    }
+    csv << "\n";
+    md << "\n|---|";
+    for (std::size_t k = 0; k < columns.size(); ++k)
+      md << "---|";
+    md << "\n";
+    for (const auto& row : table)
+    {
+      csv << row["joint"].get<std::string>();
+      md << "| " << row["joint"].get<std::string>() << " |";
+      for (const auto& c : columns)
+      {
+        const std::string v =
+            row.contains(c) ? cm(row[c]["cm"].get<double>() / 100.0) : "-";
+        csv << "," << v;
+        md << " " << v << " |";
+      }
+      csv << "\n";
+      md << "\n";
+    }
+  }
+  double widest = 0.0, slide = 0.0;
+  for (std::size_t i = 0; i < pairs.size(); ++i)
+  {
+    widest = std::max(widest, _open[i]);
+    slide = std::max(slide, _slide[i]);
+  }
+  const ContactTotals& t = _stepper.contact().totals();
+  return {{"model", "contact"},
+          {"pairs", pairs.size()},
+          {"max_opening_cm", 100.0 * widest},
+          {"max_sliding_cm", 100.0 * slide},
+          {"table", table},
+          {"ncp_iterations", t.ncp_iterations},
+          {"line_search_steps", t.line_search_steps},
+          {"gradient_steps", t.gradient_steps},
+          {"state_changes", t.state_changes},
+          {"impacts", t.impacts},
+          {"seconds",
+           {{"bulk_solve", t.seconds_bulk},
+            {"contact_solve", t.seconds_contact},
+            {"impact_correction", t.seconds_impact},
+            {"flexibility_setup", t.seconds_setup}}}};
+}
+} // namespace damseis::joint

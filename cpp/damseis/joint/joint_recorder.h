@@ -1,0 +1,49 @@
+// What the joints did over a time history: per pair the largest opening
+// (gap) and the largest sliding (|w_T - w_T,static|, from the state after
+// the static stage) with their times; per step the pairs open and sliding,
+// the widest opening and the NCP iterations. Then the tables engineers
+// read (the paper's Tables 2-5): per joint and per face (upstream U,
+// downstream D) the largest opening and sliding in cm.
+#pragma once
+
+#include "contact_stepper.h"
+#include <damseis/engine/parts.h>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace damseis::joint
+{
+/// A face of the dam: its name ("U", "D", ...) and the global blocks
+/// (nodes) on it.
+struct PairFace
+{
+  std::string name;
+  std::vector<std::int64_t> blocks; ///< sorted
+};
+
+class JointRecorder : public engine::Observer
+{
+public:
+  /// Sliding is measured from `w_static` (3 per pair). Replicated on every
+  /// rank (the contact state is).
+  JointRecorder(const ContactStepper& stepper, Eigen::VectorXd w_static);
+  void record(int k, double t) override;
+  void save(engine::Arrays& arrays) const override;
+  void restore(const engine::CheckpointData& data) override;
+
+  /// Writes joint_pairs.csv, joint_steps.csv, joint_table.csv and
+  /// joint_table.md into `dir` (rank 0) and returns the summary's entries.
+  nlohmann::json write(MPI_Comm comm, const std::filesystem::path& dir,
+                       const std::vector<PairFace>& faces) const;
+
+private:
+  const ContactStepper& _stepper;
+  Eigen::VectorXd _w_static;
+  /// Per pair: largest opening, its time, largest sliding, its time.
+  std::vector<double> _open, _t_open, _slide, _t_slide;
+  /// Per step: t, pairs open, pairs sliding, widest opening, NCP iterations.
+  std::vector<double> _steps;
+};
+} // namespace damseis::joint

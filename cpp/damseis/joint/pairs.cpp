@@ -1,0 +1,229 @@
+#include "pairs.h"
+#include <algorithm>
+#include <cmath>
+#include <damseis/fem/facet_dofs.h>
+#include <damseis/geometry/tagged.h>
+#include <damseis/linalg/all_gather.h>
+#include <dolfinx/common/IndexMap.h>
+#include <dolfinx/fem/DofMap.h>
+#include <dolfinx/mesh/Mesh.h>
+#include <dolfinx/mesh/utils.h>
+#include <map>
+#include <numeric>
+#include <stdexcept>
+
+namespace damseis::joint
+{
+namespace
+{
+using Vec3 = Eigen::Vector3d;
+
+/// Global block index of local block b.
+std::int64_t global_block(const dolfinx::common::IndexMap& map, std::int32_t b)
+{
+  std::int64_t g = 0;
+  map.local_to_global(std::span<const std::int32_t>(&b, 1),
+                      std::span<std::int64_t>(&g, 1));
+  return g;
+}
+
+/// Coordinates of geometry node i.
+Vec3 point(const dolfinx::mesh::Mesh& mesh, std::int32_t i)
+{
+  const auto& x = mesh.geometry().x();
+  return {x[3 * i], x[3 * i + 1], x[3 * i + 2]};
+}
+
+/// Area-weighted normals (global block, n_x, n_y, n_z) at the nodes of the
+/// facets tagged `tag` whose cell is owned here: each facet's normal points
+/// out of its cell (side 1 into side 2).
+std::vector<double>
+node_normals(const dolfinx::fem::FunctionSpace& V,
+             const dolfinx::mesh::MeshTags<std::int32_t>& facet_tags, int tag)
+{
+  const auto& mesh = *V.mesh();
+  const int tdim = mesh.topology().dim();
+  mesh.topology_mutable().create_connectivity(tdim - 1, tdim);
+  mesh.topology_mutable().create_connectivity(tdim, tdim - 1);
+  const auto f_to_c = mesh.topology().connectivity(tdim - 1, tdim);
+  const auto c_to_f = mesh.topology().connectivity(tdim, tdim - 1);
+  const std::int32_t owned_cells =
+      mesh.topology().index_map(tdim)->size_local();
+  const auto& dofmap = *V.dofmap();
+  const auto& layout = dofmap.element_dof_layout();
+  const auto facets = geometry::tagged_entities(facet_tags, {tag});
+
+  std::vector<double> out;
+  for (std::int32_t f : facets)
+  {
+    const std::int32_t c = f_to_c->links(f)[0];
+    if (c >= owned_cells)
+      continue;
+    const auto fx = dolfinx::mesh::entities_to_geometry(
+        mesh, tdim - 1, std::span<const std::int32_t>(&f, 1), false);
+    const auto cx = dolfinx::mesh::entities_to_geometry(
+        mesh, tdim, std::span<const std::int32_t>(&c, 1), false);
+    const Vec3 a = point(mesh, fx[0]), b = point(mesh, fx[1]),
+               d = point(mesh, fx[2]);
+    Vec3 n = 0.5 * (b - a).cross(d - a); // |n| = area
+    Vec3 centre = Vec3::Zero();
+    for (std::int32_t node : cx) // one cell: its vertices
+      centre += point(mesh, node) / static_cast<double>(cx.size());
+    if (n.dot((a + b + d) / 3.0 - centre) < 0.0)
+      n = -n;
+    const auto cf = c_to_f->links(c);
+    const int local = static_cast<int>(
+        std::distance(cf.begin(), std::find(cf.begin(), cf.end(), f)));
+    const auto cell_dofs = dofmap.cell_dofs(c);
+    for (int k : layout.entity_closure_dofs(tdim - 1, local))
+    {
+      const auto g = global_block(*dofmap.index_map, cell_dofs[k]);
+      out.insert(out.end(), {static_cast<double>(g), n[0], n[1], n[2]});
+    }
+  }
+  return out;
+}
+
+/// (global block, x, y, z) of the owned nodes on the facets tagged `tag`.
+std::vector<double>
+owned_nodes(const dolfinx::fem::FunctionSpace& V,
+            const dolfinx::mesh::MeshTags<std::int32_t>& facet_tags, int tag,
+            const std::vector<double>& x)
+{
+  const auto& map = *V.dofmap()->index_map;
+  std::vector<double> out;
+  for (std::int32_t b : fem::owned_blocks_on(V, facet_tags, tag))
+  {
+    out.insert(out.end(), {static_cast<double>(map.local_range()[0] + b),
+                           x[3 * b], x[3 * b + 1], x[3 * b + 2]});
+  }
+  return out;
+}
+
+/// The frame (n, t_a, t_b) of a unit normal: t_a is the steepest descent in
+/// the plane (or x where the plane is horizontal).
+Eigen::Matrix3d frame_of(Vec3 n)
+{
+  n.normalize();
+  Vec3 t = -Vec3::UnitZ() + n.z() * n; // -e_z projected on the plane
+  if (t.norm() < 1e-6)
+    t = Vec3::UnitX() - n.x() * n;
+  t.normalize();
+  Eigen::Matrix3d Q;
+  Q.col(0) = n;
+  Q.col(1) = t;
+  Q.col(2) = n.cross(t);
+  return Q;
+}
+} // namespace
+
+contact::PairLaw PairSet::law(std::size_t i) const
+{
+  contact::PairLaw l;
+  l.mu = joints[joint[i]].mu;
+  l.keyed = joints[joint[i]].keyed;
+  return l;
+}
+
+PairSet joint_pairs(const dolfinx::fem::FunctionSpace& V,
+                    const dolfinx::mesh::MeshTags<std::int32_t>& facet_tags,
+                    const std::vector<JointSpec>& joints, double tol)
+{
+  if (V.dofmap()->index_map_bs() != 3 || V.mesh()->geometry().dim() != 3)
+    throw std::invalid_argument("joint pairs need a 3D vector space");
+  MPI_Comm comm = V.mesh()->comm();
+  const std::vector<double> x = V.tabulate_dof_coordinates(false);
+  PairSet set;
+  set.joints = joints;
+  for (std::size_t j = 0; j < joints.size(); ++j)
+  {
+    const auto side1 = linalg::all_gather(
+        comm, owned_nodes(V, facet_tags, joints[j].tag_side1, x));
+    const auto side2 = linalg::all_gather(
+        comm, owned_nodes(V, facet_tags, joints[j].tag_side2, x));
+    const auto normals = linalg::all_gather(
+        comm, node_normals(V, facet_tags, joints[j].tag_side1));
+    std::map<std::int64_t, Vec3> normal;
+    for (std::size_t k = 0; k < normals.size(); k += 4)
+    {
+      auto [it, fresh] = normal.try_emplace(
+          static_cast<std::int64_t>(normals[k]), Vec3::Zero());
+      it->second += Vec3(normals[k + 1], normals[k + 2], normals[k + 3]);
+    }
+    // Side-1 nodes sorted by x for the coincidence search.
+    const std::size_t n1 = side1.size() / 4;
+    std::vector<std::size_t> order(n1);
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t a, std::size_t b)
+              { return side1[4 * a + 1] < side1[4 * b + 1]; });
+    std::vector<std::int64_t> on_side1(n1);
+    for (std::size_t m = 0; m < n1; ++m)
+      on_side1[m] = static_cast<std::int64_t>(side1[4 * m]);
+    std::sort(on_side1.begin(), on_side1.end());
+
+    struct Pair
+    {
+      std::int64_t b1, b2;
+      std::array<double, 3> x;
+    };
+    std::vector<Pair> pairs;
+    for (std::size_t k = 0; k < side2.size(); k += 4)
+    {
+      const auto b2 = static_cast<std::int64_t>(side2[k]);
+      if (std::binary_search(on_side1.begin(), on_side1.end(), b2))
+        continue; // one node: bonded where the joint meets other material
+      const double* p = &side2[k + 1];
+      auto lo = std::lower_bound(order.begin(), order.end(), p[0] - tol,
+                                 [&](std::size_t m, double v)
+                                 { return side1[4 * m + 1] < v; });
+      std::int64_t b1 = -1;
+      for (auto it = lo; it != order.end() && side1[4 * *it + 1] <= p[0] + tol;
+           ++it)
+      {
+        const double* q = &side1[4 * *it + 1];
+        if (std::hypot(q[0] - p[0], q[1] - p[1], q[2] - p[2]) <= tol)
+        {
+          b1 = static_cast<std::int64_t>(side1[4 * *it]);
+          break;
+        }
+      }
+      if (b1 < 0)
+      {
+        throw std::runtime_error(
+            "joint " + joints[j].label + ": no side-1 node at (" +
+            std::to_string(p[0]) + ", " + std::to_string(p[1]) + ", " +
+            std::to_string(p[2]) + ") for the side-2 node there");
+      }
+      pairs.push_back({b1, b2, {p[0], p[1], p[2]}});
+    }
+    if (pairs.empty())
+      throw std::runtime_error("joint " + joints[j].label +
+                               " has no node pairs");
+    // By z, x, y, each rounded to the tolerance (dof coordinates carry
+    // round-off that differs between partitions).
+    auto key = [tol](const Pair& p)
+    {
+      std::array<long long, 3> k;
+      for (int d = 0; d < 3; ++d)
+        k[d] = std::llround(p.x[(d + 2) % 3] / std::max(tol, 1e-12));
+      return k;
+    };
+    std::sort(pairs.begin(), pairs.end(),
+              [&](const Pair& a, const Pair& b) { return key(a) < key(b); });
+    for (const Pair& p : pairs)
+    {
+      const auto it = normal.find(p.b1);
+      if (it == normal.end() || it->second.norm() == 0.0)
+        throw std::runtime_error("joint " + joints[j].label +
+                                 ": a pair without a facet normal");
+      set.joint.push_back(static_cast<int>(j));
+      set.block1.push_back(p.b1);
+      set.block2.push_back(p.b2);
+      set.x.push_back(p.x);
+      set.frame.push_back(frame_of(it->second));
+    }
+  }
+  return set;
+}
+} // namespace damseis::joint
