@@ -1,6 +1,9 @@
 #include "ncp.h"
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <stdexcept>
 
 namespace damseis::contact
 {
@@ -112,6 +115,56 @@ bool reduced_direction(const ContactProblem& c,
 }
 } // namespace
 
+void write_problem(const ContactProblem& c, const Eigen::VectorXd& p0,
+                   const std::string& file)
+{
+  std::ofstream out(file, std::ios::binary);
+  auto put = [&](const Eigen::MatrixXd& m)
+  {
+    const std::int64_t r = m.rows(), k = m.cols();
+    out.write(reinterpret_cast<const char*>(&r), sizeof r);
+    out.write(reinterpret_cast<const char*>(&k), sizeof k);
+    out.write(reinterpret_cast<const char*>(m.data()),
+              static_cast<std::streamsize>(sizeof(double) * r * k));
+  };
+  Eigen::MatrixXd laws(static_cast<Eigen::Index>(c.laws.size()), 4);
+  for (std::size_t i = 0; i < c.laws.size(); ++i)
+    laws.row(static_cast<Eigen::Index>(i)) << c.laws[i].mu,
+        c.laws[i].keyed ? 1.0 : 0.0, c.laws[i].r_n, c.laws[i].r_t;
+  for (const Eigen::MatrixXd& m :
+       {laws, c.W, c.W_inv, Eigen::MatrixXd(c.w_free),
+        Eigen::MatrixXd(c.wT_old), Eigen::MatrixXd(c.g0), Eigen::MatrixXd(p0)})
+    put(m);
+}
+
+ContactProblem read_problem(const std::string& file, Eigen::VectorXd& p0)
+{
+  std::ifstream in(file, std::ios::binary);
+  auto get = [&]()
+  {
+    std::int64_t r = 0, k = 0;
+    in.read(reinterpret_cast<char*>(&r), sizeof r);
+    in.read(reinterpret_cast<char*>(&k), sizeof k);
+    Eigen::MatrixXd m(r, k);
+    in.read(reinterpret_cast<char*>(m.data()),
+            static_cast<std::streamsize>(sizeof(double) * r * k));
+    if (!in)
+      throw std::runtime_error("cannot read the contact problem " + file);
+    return m;
+  };
+  ContactProblem c;
+  const Eigen::MatrixXd laws = get();
+  for (Eigen::Index i = 0; i < laws.rows(); ++i)
+    c.laws.push_back({laws(i, 0), laws(i, 1) != 0.0, laws(i, 2), laws(i, 3)});
+  c.W = get();
+  c.W_inv = get();
+  c.w_free = get();
+  c.wT_old = get();
+  c.g0 = get();
+  p0 = get();
+  return c;
+}
+
 Eigen::VectorXd contact_residual(const ContactProblem& c,
                                  const Eigen::VectorXd& p, Eigen::VectorXd& w,
                                  std::vector<PairState>& states,
@@ -125,8 +178,11 @@ Eigen::VectorXd contact_residual(const ContactProblem& c,
   return F;
 }
 
-NcpReport solve_ncp(const ContactProblem& c, const Eigen::VectorXd& p0,
-                    const NcpSettings& s)
+namespace
+{
+/// The damped semismooth Newton iteration from p0.
+NcpReport newton(const ContactProblem& c, const Eigen::VectorXd& p0,
+                 const NcpSettings& s)
 {
   const Eigen::Index n = static_cast<Eigen::Index>(c.laws.size());
   const bool reduced = c.W_inv.rows() == 3 * n && n > 0;
@@ -212,5 +268,45 @@ NcpReport solve_ncp(const ContactProblem& c, const Eigen::VectorXd& p0,
   }
   rep.residual = F.norm() / scale;
   return rep;
+}
+} // namespace
+
+Eigen::VectorXd stuck_forces(const ContactProblem& c)
+{
+  // F = 0 with every pair closed and stuck: w_n = -g0, w_T = w_T,old, i.e.
+  // W p = w_target - w_free.
+  const Eigen::Index n = static_cast<Eigen::Index>(c.laws.size());
+  Eigen::VectorXd target(3 * n);
+  for (Eigen::Index i = 0; i < n; ++i)
+    target.segment<3>(3 * i) << -c.g0[i], c.wT_old.segment<2>(2 * i);
+  return c.W_inv.rows() == 3 * n
+             ? Eigen::VectorXd(c.W_inv * (target - c.w_free))
+             : Eigen::VectorXd(c.W.ldlt().solve(target - c.w_free));
+}
+
+NcpReport solve_ncp(const ContactProblem& c, const Eigen::VectorXd& p0,
+                    const NcpSettings& s)
+{
+  // Two starting points: the warm start (the last step's forces: best when
+  // little changes) and the forces of the joints stuck (best after a large
+  // change of load: the bonded solution, from which only the pairs in
+  // tension open and those past the friction limit slide). Newton starts
+  // from the one of smaller residual, and from the other if it fails.
+  const Eigen::VectorXd stuck = stuck_forces(c);
+  auto merit = [&](const Eigen::VectorXd& p)
+  {
+    std::vector<PairState> st;
+    const Eigen::VectorXd w = c.w_free + c.W * p;
+    return residual_at(c, p, w, st, nullptr).squaredNorm();
+  };
+  const bool warm_first = merit(p0) <= merit(stuck);
+  NcpReport first = newton(c, warm_first ? p0 : stuck, s);
+  if (first.converged)
+    return first;
+  NcpReport second = newton(c, warm_first ? stuck : p0, s);
+  second.iterations += first.iterations;
+  second.line_search_steps += first.line_search_steps;
+  second.gradient_steps += first.gradient_steps;
+  return second.converged || second.residual < first.residual ? second : first;
 }
 } // namespace damseis::contact

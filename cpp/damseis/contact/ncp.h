@@ -6,6 +6,7 @@
 #pragma once
 
 #include "alart_curnier.h"
+#include <string>
 #include <vector>
 
 namespace damseis::contact
@@ -50,7 +51,20 @@ Eigen::VectorXd contact_residual(const ContactProblem& c,
                                  std::vector<PairState>& states,
                                  Eigen::MatrixXd* J = nullptr);
 
-/// Solves the contact problem from p0 (warm start: the last step's forces).
+/// Writes the problem and a starting point to a binary file, and reads it
+/// back (for studying the solver on the problems of a real run:
+/// DAMSEIS_DUMP_NCP=<prefix> in the joint contact; bench/ncp_replay).
+void write_problem(const ContactProblem& c, const Eigen::VectorXd& p0,
+                   const std::string& file);
+ContactProblem read_problem(const std::string& file, Eigen::VectorXd& p0);
+
+/// The forces with every pair closed and stuck (F = 0 on the stick branch:
+/// the bonded joints' forces).
+Eigen::VectorXd stuck_forces(const ContactProblem& c);
+
+/// Solves the contact problem from p0 (warm start: the last step's forces)
+/// or from stuck_forces(), whichever has the smaller residual, then from
+/// the other if Newton fails; the report counts both attempts.
 NcpReport solve_ncp(const ContactProblem& c, const Eigen::VectorXd& p0,
                     const NcpSettings& s = {});
 } // namespace damseis::contact

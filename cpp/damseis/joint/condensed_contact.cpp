@@ -1,5 +1,6 @@
 #include "condensed_contact.h"
 #include <chrono>
+#include <cstdlib>
 #include <damseis/dynamics/nonlinear_newmark.h>
 #include <map>
 #include <petscblaslapack.h>
@@ -177,6 +178,13 @@ contact::NcpReport CondensedContact::solve_pairs(const Eigen::VectorXd& y,
   _problem.w_free = relative(x0);
   _problem.wT_old = _wT_ref;
   _problem.g0 = _g0;
+  if (const char* dump = std::getenv("DAMSEIS_DUMP_NCP"))
+  {
+    static int dumped = 0; // every solve of the run, in order
+    contact::write_problem(_problem, _p,
+                           std::string(dump) + "_" + std::to_string(dumped++) +
+                               ".bin");
+  }
   contact::NcpReport rep = contact::solve_ncp(_problem, _p, _ncp);
   x_s = x0 + _Y * rep.p;
   return rep;

@@ -1,0 +1,52 @@
+// Replays joint contact problems dumped by a run (DAMSEIS_DUMP_NCP=<prefix>
+// writes <prefix>_<k>.bin at every contact solve) through the NCP solver:
+// iterations, line-search steps, residual and time per problem.
+//   bench_ncp_replay FILE... [--max-iterations N]
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <damseis/contact/ncp.h>
+#include <string>
+#include <vector>
+
+int main(int argc, char** argv)
+{
+  damseis::contact::NcpSettings s;
+  std::vector<std::string> files;
+  bool stick_start = false;
+  for (int i = 1; i < argc; ++i)
+  {
+    if (std::strcmp(argv[i], "--stick-start") == 0)
+      stick_start = true;
+    else if (std::strcmp(argv[i], "--max-iterations") == 0 && i + 1 < argc)
+      s.max_iterations = std::stoi(argv[++i]);
+    else
+      files.push_back(argv[i]);
+  }
+  std::printf(
+      "| problem | pairs | converged | iterations | line-search steps | "
+      "gradient steps | residual | seconds "
+      "|\n|---|---|---|---|---|---|---|---|\n");
+  for (const auto& f : files)
+  {
+    Eigen::VectorXd p0;
+    const auto c = damseis::contact::read_problem(f, p0);
+    if (stick_start)
+    {
+      // Every pair stuck and closed: W p = w_target - w_free.
+      const Eigen::Index n = static_cast<Eigen::Index>(c.laws.size());
+      Eigen::VectorXd target(3 * n);
+      for (Eigen::Index i = 0; i < n; ++i)
+        target.segment<3>(3 * i) << -c.g0[i], c.wT_old.segment<2>(2 * i);
+      p0 = c.W_inv * (target - c.w_free);
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto r = damseis::contact::solve_ncp(c, p0, s);
+    const double sec =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
+            .count();
+    std::printf("| %s | %zu | %s | %d | %d | %d | %.2e | %.3f |\n", f.c_str(),
+                c.laws.size(), r.converged ? "yes" : "no", r.iterations,
+                r.line_search_steps, r.gradient_steps, r.residual, sec);
+  }
+}
