@@ -14,7 +14,8 @@
 #     block exactly for the record's piecewise-linear pulse (the ramps of
 #     one sample at both ends). A = 0.5 g: the largest sliding of the pairs
 #     within 0.5% (time discretisation and the cube's elasticity; measured
-#     +0.14% with P1, +0.17% with P2), and the cube has stopped by
+#     +0.14% with P1, +0.17% with P2: contact at the vertex pairs, the
+#     midside pairs following their edges), and the cube has stopped by
 #     0.55 s (its top moves less than 1e-4 of the slip in the last 0.05 s;
 #     the rigid block stops at 0.50 s).
 #  2. The friction threshold mu g, on a nearly rigid cube (rho = 24
@@ -24,9 +25,10 @@
 #     A = 0.9 mu g does not slide (the largest pair sliding below 1e-3 of
 #     the 1.1 mu g one: elastic micro-slip only).
 #  3. A keyed joint (no sliding) that stays closed (A = 0.1 g) is the
-#     bonded joint: crest history equal within 1e-6 of its largest value
-#     (the static stage of a cube held only by its joint uses K + 1e-6
-#     omega_1^2 M; measured 1e-8).
+#     bonded joint, P2 (contact at the vertex pairs, the midside pairs
+#     following them): crest history equal within 1e-6 of its largest
+#     value (the static stage of a cube held only by its joint uses K +
+#     1e-6 omega_1^2 M; measured 5e-8).
 #  4. 2 MPI ranks give the serial joint table and crest history (1e-8;
 #     measured 0 and 1e-10, the digits written).
 # Usage: joint_contact_checks.sh DAM_MODEL MPIEXEC PYTHON SOURCE_DIR
@@ -48,9 +50,9 @@ run above --set mesh.order=1 "${contact[@]}" --set 'regions.rho=[24, 24]' \
   --set motion.x.peak_g=0.22
 run below --set mesh.order=1 "${contact[@]}" --set 'regions.rho=[24, 24]' \
   --set motion.x.peak_g=0.18
-run keyed --set mesh.order=1 --set joints.model=contact \
-  --set 'joints.keyed=[joint_base]' --set motion.x.peak_g=0.1 --set time.duration=0.3
-run bonded --set mesh.order=1 --set motion.x.peak_g=0.1 --set time.duration=0.3
+run keyed --set joints.model=contact --set 'joints.keyed=[joint_base]' \
+  --set motion.x.peak_g=0.1 --set time.duration=0.3
+run bonded --set motion.x.peak_g=0.1 --set time.duration=0.3
 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
   OMPI_MCA_rmaps_base_oversubscribe=1 "$mpiexec" -n 2 "$dm" --case "$case" \
   --out "$work/p1_2" --set output.plots=false --set output.every=100000 \

@@ -12,6 +12,7 @@
 #include <damseis/engine/linear_stepper.h>
 #include <damseis/engine/time_history.h>
 #include <damseis/fem/facet_dofs.h>
+#include <damseis/fem/prolongation.h>
 #include <damseis/fem/tied_dofs.h>
 #include <damseis/geometry/tags.h>
 #include <damseis/joint/contact_stepper.h>
@@ -61,6 +62,9 @@ private:
 
   /// The initial state of a run with an initial velocity.
   engine::InitialState initial_state();
+  /// Contact joints: the pairs, the bonded system for the modes, and with
+  /// P2 the midside constraints (sys reduced by them).
+  void set_up_contact(SeismicSystem& sys);
   /// The modal stage of a model with contact joints: on the joints closed.
   void modal_stage_closed_joints();
   /// The faces of the output settings as pair faces (joint tables).
@@ -73,6 +77,8 @@ private:
   Mat _tie;
   const ContactJoints* _contact; ///< null: no contact joints
   Mat _modal_tie = nullptr;      ///< with contact: the joints bonded
+  Matrix _K_bonded{nullptr, false}, _M_bonded{nullptr, false};
+  Matrix _mpc{nullptr, false}; ///< P2 contact: the midside constraints
   std::optional<joint::PairSet> _pairs;
   std::optional<joint::StaticContactResult> _static_contact;
   MPI_Comm _comm;
@@ -119,21 +125,60 @@ LinearSeismicAnalysis::LinearSeismicAnalysis(fem::ElasticModel& fe,
   SeismicSystem sys =
       assemble_seismic_system(fe, s, loads.static_loads, _tie, false);
   _added = sys.added;
+  if (_contact)
+    set_up_contact(sys);
   _K = std::move(sys.K);
   _M = std::move(sys.M);
   _F = std::move(sys.F_static);
   _F_g = std::move(sys.F_g);
-  if (_contact)
-  {
-    _pairs = joint::joint_pairs(*fe.V(), *_contact->facet_tags,
-                                _contact->joints, _contact->tolerance);
-    results::print(
-        _comm, "contact joints: " + std::to_string(_contact->joints.size()) +
-                   " joints, " + std::to_string(_pairs->size()) +
-                   " node pairs");
-  }
   _u_static = linalg::column_vector(_K.mat());
   _static_seconds = seconds_since(_wall_start);
+}
+
+void LinearSeismicAnalysis::set_up_contact(SeismicSystem& sys)
+{
+  // The modes of the joints bonded (the natural frequencies and the
+  // Rayleigh damping of the closed dam).
+  _K_bonded = Matrix(fem::reduce_to_tied(sys.K.mat(), _modal_tie), false);
+  _M_bonded = Matrix(fem::reduce_to_tied(sys.M.mat(), _modal_tie), false);
+  joint::PairSet all = joint::joint_pairs(
+      *_fe.V(), *_contact->facet_tags, _contact->joints, _contact->tolerance);
+  // P2: the midside pairs follow their edges' vertex pairs (u = P u_r, P
+  // in the role of a tie), contact acts at the vertex pairs.
+  std::vector<std::size_t> vertex;
+  for (std::size_t i = 0; i < all.size(); ++i)
+    if (!all.midside[i])
+      vertex.push_back(i);
+  _pairs = joint::subset(all, vertex);
+  if (vertex.size() < all.size())
+  {
+    _mpc = Matrix(joint::midside_prolongation(*_fe.V(), all), false);
+    _tie = _mpc.mat();
+    sys.K = Matrix(fem::reduce_to_tied(sys.K.mat(), _tie), false);
+    sys.M = Matrix(fem::reduce_to_tied(sys.M.mat(), _tie), false);
+    for (Vector* f : {&sys.F_static, &sys.F_g})
+    {
+      Vector reduced = linalg::column_vector(sys.K.mat());
+      MatMultTranspose(_tie, f->vec(), reduced.vec());
+      *f = std::move(reduced);
+    }
+    // The pairs' nodes in the reduced numbering.
+    for (auto* blocks : {&_pairs->block1, &_pairs->block2})
+    {
+      *blocks = fem::reduced_blocks(_tie, 3, *blocks);
+      if (std::any_of(blocks->begin(), blocks->end(),
+                      [](std::int64_t b) { return b < 0; }))
+        throw std::logic_error("a vertex pair node is constrained");
+    }
+  }
+  results::print(_comm,
+                 "contact joints: " + std::to_string(_contact->joints.size()) +
+                     " joints, " + std::to_string(_pairs->size()) +
+                     " node pairs in contact" +
+                     (_mpc.mat()
+                          ? ", " + std::to_string(all.size() - _pairs->size()) +
+                                " midside pairs following them"
+                          : std::string()));
 }
 
 void LinearSeismicAnalysis::modal_stage()
@@ -151,11 +196,11 @@ void LinearSeismicAnalysis::modal_stage()
 
 void LinearSeismicAnalysis::modal_stage_closed_joints()
 {
-  Matrix K(fem::reduce_to_tied(_K.mat(), _modal_tie), false);
-  Matrix M(fem::reduce_to_tied(_M.mat(), _modal_tie), false);
   Matrix M0 = dry_mass(_fe, _added, _modal_tie);
-  _modal = modal_and_damping(K.mat(), M.mat(), _added ? M0.mat() : nullptr, _s,
-                             nullptr);
+  _modal = modal_and_damping(_K_bonded.mat(), _M_bonded.mat(),
+                             _added ? M0.mat() : nullptr, _s, nullptr);
+  _K_bonded = Matrix(nullptr, false);
+  _M_bonded = Matrix(nullptr, false);
 }
 
 void LinearSeismicAnalysis::static_stage()

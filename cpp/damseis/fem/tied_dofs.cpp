@@ -1,10 +1,12 @@
 #include "tied_dofs.h"
 #include "facet_dofs.h"
+#include "prolongation.h"
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <damseis/geometry/tagged.h>
 #include <damseis/linalg/all_gather.h>
+#include <damseis/linalg/direct_solver.h>
 #include <dolfinx/common/IndexMap.h>
 #include <dolfinx/fem/DirichletBC.h>
 #include <dolfinx/fem/DofMap.h>
@@ -92,74 +94,10 @@ Mat tie_prolongation(const dolfinx::fem::FunctionSpace& V,
     }
   }
 
-  // Reduced numbering: owned blocks that are not slaves, in order.
-  std::vector<std::int64_t> reduced(n_owned, -1);
-  std::int64_t n_reduced = 0;
-  for (std::int32_t b = 0, s = 0; b < n_owned; ++b)
-  {
-    if (s < static_cast<std::int32_t>(slaves.size()) && slaves[s] == b)
-    {
-      ++s;
-      continue;
-    }
-    reduced[b] = n_reduced++;
-  }
-  std::int64_t offset = 0;
-  MPI_Exscan(&n_reduced, &offset, 1, MPI_INT64_T, MPI_SUM, comm);
-  int rank = 0;
-  MPI_Comm_rank(comm, &rank);
-  if (rank == 0)
-    offset = 0;
-  for (auto& r : reduced)
-  {
-    if (r >= 0)
-      r += offset;
-  }
-  std::int64_t N_reduced = 0;
-  MPI_Allreduce(&n_reduced, &N_reduced, 1, MPI_INT64_T, MPI_SUM, comm);
-
-  // Reduced index of every master block, from its owner.
-  std::vector<double> master_reduced_local;
-  for (std::size_t i = 0; i < masters_local.size(); i += 4)
-  {
-    const auto b =
-        static_cast<std::int64_t>(masters_local[i + 3]) - first_block;
-    master_reduced_local.push_back(static_cast<double>(reduced[b]));
-  }
-  const std::vector<double> master_reduced =
-      linalg::all_gather(comm, master_reduced_local);
-  std::vector<std::pair<std::int64_t, std::int64_t>> lookup(n_masters);
-  for (std::size_t m = 0; m < n_masters; ++m)
-  {
-    lookup[m] = {static_cast<std::int64_t>(masters[4 * m + 3]),
-                 static_cast<std::int64_t>(master_reduced[m])};
-  }
-  std::sort(lookup.begin(), lookup.end());
-
-  Mat P;
-  MatCreateAIJ(comm, n_owned * bs, n_reduced * bs, map.size_global() * bs,
-               N_reduced * bs, 1, nullptr, 1, nullptr, &P);
-  for (std::int32_t b = 0, s = 0; b < n_owned; ++b)
-  {
-    std::int64_t col = reduced[b];
-    if (s < static_cast<std::int32_t>(slaves.size()) && slaves[s] == b)
-    {
-      auto it =
-          std::lower_bound(lookup.begin(), lookup.end(),
-                           std::make_pair(slave_master[s], std::int64_t(-1)));
-      col = it->second;
-      ++s;
-    }
-    for (int k = 0; k < bs; ++k)
-    {
-      const PetscInt row = static_cast<PetscInt>((first_block + b) * bs + k);
-      const PetscInt c = static_cast<PetscInt>(col * bs + k);
-      MatSetValue(P, row, c, 1.0, INSERT_VALUES);
-    }
-  }
-  MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY);
-  MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY);
-  return P;
+  std::vector<BlockConstraint> constraints(slaves.size());
+  for (std::size_t i = 0; i < slaves.size(); ++i)
+    constraints[i] = {slaves[i], {{slave_master[i], 1.0}}};
+  return constraint_prolongation(V, constraints);
 }
 
 Mat reduce_to_tied(Mat A, Mat P)
@@ -175,15 +113,26 @@ Mat reduce_to_tied(Mat A, Mat P)
 
 Vec restrict_to_tied(Mat P, Vec x)
 {
-  Vec xr, ones, counts;
-  MatCreateVecs(P, &xr, &ones);
-  VecDuplicate(xr, &counts);
-  VecSet(ones, 1.0);
-  MatMultTranspose(P, ones, counts);
-  MatMultTranspose(P, x, xr);
-  VecPointwiseDivide(xr, xr, counts);
-  VecDestroy(&ones);
-  VecDestroy(&counts);
+  // Least squares, x_r = (P^T P)^-1 P^T x: exact where x = P x_r. For ties
+  // P^T P is diagonal (the nodes tied together), the mean of the tied
+  // values; general constraints (weights of both signs) need the solve.
+  Vec xr, rhs;
+  MatCreateVecs(P, &xr, nullptr);
+  VecDuplicate(xr, &rhs);
+  MatMultTranspose(P, x, rhs);
+  Mat PtP;
+  MatTransposeMatMult(P, P, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &PtP);
+  MPI_Comm comm = PetscObjectComm(reinterpret_cast<PetscObject>(P));
+  int size = 1;
+  MPI_Comm_size(comm, &size);
+  {
+    linalg::DirectSolver solver(comm, size == 1 ? linalg::Factorization::petsc
+                                                : linalg::Factorization::mumps);
+    solver.factorize(PtP);
+    solver.solve(rhs, xr);
+  }
+  MatDestroy(&PtP);
+  VecDestroy(&rhs);
   return xr;
 }
 } // namespace damseis::fem

@@ -27,6 +27,8 @@ Mat tie_prolongation(const dolfinx::fem::FunctionSpace& V,
 Mat reduce_to_tied(Mat A, Mat P);
 
 /// The restriction of a vector x that P reproduces exactly (x = P x_r):
-/// x_r = (P^T x) ./ (P^T 1). The caller owns the result.
+/// the least-squares x_r = (P^T P)^-1 P^T x (with ties: the mean of the
+/// tied values). Any prolongation (prolongation.h). The caller owns the
+/// result.
 Vec restrict_to_tied(Mat P, Vec x);
 } // namespace damseis::fem

@@ -2,11 +2,13 @@
 #include <algorithm>
 #include <cmath>
 #include <damseis/fem/facet_dofs.h>
+#include <damseis/fem/prolongation.h>
 #include <damseis/geometry/tagged.h>
 #include <damseis/linalg/all_gather.h>
 #include <dolfinx/common/IndexMap.h>
 #include <dolfinx/fem/DofMap.h>
 #include <dolfinx/mesh/Mesh.h>
+#include <dolfinx/mesh/cell_types.h>
 #include <dolfinx/mesh/utils.h>
 #include <map>
 #include <numeric>
@@ -84,6 +86,57 @@ node_normals(const dolfinx::fem::FunctionSpace& V,
   return out;
 }
 
+/// (midpoint, end, end) global blocks of the edges of the facets tagged
+/// `tag` whose cell is owned here (none for P1).
+std::vector<std::int64_t>
+edge_midpoints(const dolfinx::fem::FunctionSpace& V,
+               const dolfinx::mesh::MeshTags<std::int32_t>& facet_tags, int tag)
+{
+  const auto& mesh = *V.mesh();
+  const int tdim = mesh.topology().dim();
+  const auto& dofmap = *V.dofmap();
+  const auto& layout = dofmap.element_dof_layout();
+  std::vector<std::int64_t> out;
+  if (layout.num_entity_dofs(1) == 0)
+    return out;
+  mesh.topology_mutable().create_connectivity(tdim - 1, tdim);
+  mesh.topology_mutable().create_connectivity(tdim, tdim - 1);
+  const auto f_to_c = mesh.topology().connectivity(tdim - 1, tdim);
+  const auto c_to_f = mesh.topology().connectivity(tdim, tdim - 1);
+  const std::int32_t owned_cells =
+      mesh.topology().index_map(tdim)->size_local();
+  const auto cell_type = mesh.topology().cell_type();
+  const auto facet_vertices =
+      dolfinx::mesh::get_entity_vertices(cell_type, tdim - 1);
+  const auto edge_vertices = dolfinx::mesh::get_entity_vertices(cell_type, 1);
+  for (std::int32_t f : geometry::tagged_entities(facet_tags, {tag}))
+  {
+    const std::int32_t c = f_to_c->links(f)[0];
+    if (c >= owned_cells)
+      continue;
+    const auto cf = c_to_f->links(c);
+    const int lf = static_cast<int>(
+        std::distance(cf.begin(), std::find(cf.begin(), cf.end(), f)));
+    const auto fv = facet_vertices.links(lf);
+    const auto cell_dofs = dofmap.cell_dofs(c);
+    for (int e = 0; e < edge_vertices.num_nodes(); ++e)
+    {
+      const auto ev = edge_vertices.links(e);
+      auto in_facet = [&](int v)
+      { return std::find(fv.begin(), fv.end(), v) != fv.end(); };
+      if (!in_facet(ev[0]) || !in_facet(ev[1]))
+        continue;
+      auto block = [&](int dim, int entity)
+      {
+        return global_block(*dofmap.index_map,
+                            cell_dofs[layout.entity_dofs(dim, entity)[0]]);
+      };
+      out.insert(out.end(), {block(1, e), block(0, ev[0]), block(0, ev[1])});
+    }
+  }
+  return out;
+}
+
 /// (global block, x, y, z) of the owned nodes on the facets tagged `tag`.
 std::vector<double>
 owned_nodes(const dolfinx::fem::FunctionSpace& V,
@@ -117,6 +170,55 @@ Eigen::Matrix3d frame_of(Vec3 n)
 }
 } // namespace
 
+PairSet subset(const PairSet& set, const std::vector<std::size_t>& keep)
+{
+  PairSet out;
+  out.joints = set.joints;
+  std::vector<int> renumber(set.size(), -1);
+  for (std::size_t k = 0; k < keep.size(); ++k)
+    renumber[keep[k]] = static_cast<int>(k);
+  for (std::size_t i : keep)
+  {
+    out.joint.push_back(set.joint[i]);
+    out.block1.push_back(set.block1[i]);
+    out.block2.push_back(set.block2[i]);
+    out.x.push_back(set.x[i]);
+    out.frame.push_back(set.frame[i]);
+    out.midside.push_back(set.midside[i]);
+    std::array<int, 2> ends = set.edge_ends[i];
+    for (int& e : ends)
+      e = e < 0 ? -1 : renumber[e];
+    out.edge_ends.push_back(ends);
+  }
+  return out;
+}
+
+Mat midside_prolongation(const dolfinx::fem::FunctionSpace& V,
+                         const PairSet& set)
+{
+  const auto& map = *V.dofmap()->index_map;
+  const std::int64_t first = map.local_range()[0];
+  const std::int64_t last = first + map.size_local();
+  std::vector<fem::BlockConstraint> constraints;
+  for (std::size_t i = 0; i < set.size(); ++i)
+  {
+    if (!set.midside[i] || set.block2[i] < first || set.block2[i] >= last)
+      continue;
+    // w_mid = (w_end1 + w_end2) / 2: u_2 = u_1 + (u_2 - u_1)_ends / 2.
+    fem::BlockConstraint c{static_cast<std::int32_t>(set.block2[i] - first),
+                           {{set.block1[i], 1.0}}};
+    for (int e : set.edge_ends[i])
+    {
+      if (e < 0)
+        continue; // a bonded end: no relative motion
+      c.masters.push_back({set.block2[e], 0.5});
+      c.masters.push_back({set.block1[e], -0.5});
+    }
+    constraints.push_back(std::move(c));
+  }
+  return fem::constraint_prolongation(V, constraints);
+}
+
 contact::PairLaw PairSet::law(std::size_t i) const
 {
   contact::PairLaw l;
@@ -143,6 +245,14 @@ PairSet joint_pairs(const dolfinx::fem::FunctionSpace& V,
         comm, owned_nodes(V, facet_tags, joints[j].tag_side2, x));
     const auto normals = linalg::all_gather(
         comm, node_normals(V, facet_tags, joints[j].tag_side1));
+    // Side-2 edge midpoints and their ends.
+    std::map<std::int64_t, std::array<std::int64_t, 2>> edge_of;
+    {
+      const auto e = linalg::all_gather(
+          comm, edge_midpoints(V, facet_tags, joints[j].tag_side2));
+      for (std::size_t k = 0; k < e.size(); k += 3)
+        edge_of[e[k]] = {e[k + 1], e[k + 2]};
+    }
     std::map<std::int64_t, Vec3> normal;
     for (std::size_t k = 0; k < normals.size(); k += 4)
     {
@@ -211,8 +321,24 @@ PairSet joint_pairs(const dolfinx::fem::FunctionSpace& V,
     };
     std::sort(pairs.begin(), pairs.end(),
               [&](const Pair& a, const Pair& b) { return key(a) < key(b); });
+    const std::size_t first_pair = set.size();
+    std::map<std::int64_t, int> pair_of_side2; // side-2 block -> pair index
+    for (std::size_t k = 0; k < pairs.size(); ++k)
+      pair_of_side2[pairs[k].b2] = static_cast<int>(first_pair + k);
     for (const Pair& p : pairs)
     {
+      const auto edge = edge_of.find(p.b2);
+      set.midside.push_back(edge != edge_of.end());
+      std::array<int, 2> ends = {-1, -1};
+      if (edge != edge_of.end())
+      {
+        for (int k = 0; k < 2; ++k)
+        {
+          const auto q = pair_of_side2.find(edge->second[k]);
+          ends[k] = q == pair_of_side2.end() ? -1 : q->second;
+        }
+      }
+      set.edge_ends.push_back(ends);
       const auto it = normal.find(p.b1);
       if (it == normal.end() || it->second.norm() == 0.0)
         throw std::runtime_error("joint " + joints[j].label +

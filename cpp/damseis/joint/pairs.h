@@ -12,6 +12,7 @@
 #include <damseis/contact/alart_curnier.h>
 #include <dolfinx/fem/FunctionSpace.h>
 #include <dolfinx/mesh/MeshTags.h>
+#include <petscmat.h>
 #include <string>
 #include <vector>
 
@@ -38,10 +39,27 @@ struct PairSet
   /// side-1 facets at the node, area-weighted), t_a (the steepest-descent
   /// direction in the joint plane: vertical sliding), t_b = n x t_a.
   std::vector<Eigen::Matrix3d> frame;
+  /// Pairs at the midpoints of the faces' edges (P2): their edge's two end
+  /// pairs (indices; -1 where the end is a single bonded node).
+  std::vector<std::array<int, 2>> edge_ends;
+  std::vector<bool> midside;
   std::size_t size() const { return joint.size(); }
   /// The law of pair i (friction and keys of its joint).
   contact::PairLaw law(std::size_t i) const;
 };
+
+/// The subset of pairs `keep` (indices, ascending), edge ends renumbered
+/// (-1 where an end was dropped).
+PairSet subset(const PairSet& set, const std::vector<std::size_t>& keep);
+
+/// P2 joints: the prolongation u = P u_r that makes the relative
+/// displacement of each midside pair the mean of its edge's end pairs'
+/// (u_2 = u_1 + ((u_2 - u_1)_end1 + (u_2 - u_1)_end2) / 2; a bonded end
+/// counts 0). The gap is then linear along the face's edges, so contact at
+/// the vertex pairs keeps the faces apart everywhere, as with linear
+/// elements, while the bulk keeps P2. Collective; the caller owns P.
+Mat midside_prolongation(const dolfinx::fem::FunctionSpace& V,
+                         const PairSet& set);
 
 /// The pairs of `joints` in the 3D vector space V (block size 3).
 /// Collective. Nodes on both faces (where a joint meets bonded material)
