@@ -96,7 +96,7 @@ void read_joint_contact(const input::Case& c, ArchDamConfig& a)
              std::string("names joint ") + k + ", which is not a joint",
              "labels of the joints (" + labels + ")");
   }
-  a.restitution = c.real("joints.restitution");
+  a.restitution = read_restitution(c);
   a.statics = read_joint_statics(c);
 }
 } // namespace

@@ -628,7 +628,7 @@ void read_joint_contact(const input::Case& c, DamModelConfig& cfg)
              "side1 groups of joints.side1");
     jc.keyed[static_cast<std::size_t>(it - cfg.joints.begin())] = true;
   }
-  jc.restitution = c.real("joints.restitution");
+  jc.restitution = read_restitution(c);
   jc.statics = read_joint_statics(c);
 }
 
@@ -810,11 +810,6 @@ DamModelConfig read_dam_model_config(const input::Case& c)
                "\" (contact joints on HTC concrete are not available yet)",
            "material.model = \"elastic\" with contact joints, or bonded "
            "joints with the concrete model");
-  if (cfg.contact.enabled && !cfg.initial_velocity.empty())
-    c.fail("initial.velocity_groups",
-           "is given with contact joints (not available yet)",
-           "a ground motion or tractions to excite a model with contact "
-           "joints");
   return cfg;
 }
 

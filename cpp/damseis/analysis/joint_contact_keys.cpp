@@ -9,6 +9,9 @@ void add_joint_contact_keys(input::Schema& s,
          "contact: restitution of the impact correction (1: kinetic energy "
          "kept, the paper; 0: the nodes move together)")
       .between(0, 1);
+  s.boolean("joints.impact_correction", "true", "-",
+            "contact: correct the velocities of pairs that close (the "
+            "paper's momentum and energy balance)");
   s.string("joints.dead_load", dead_load_default, "-",
            "contact: the dead weight with the joints active, or carried by "
            "the blocks alone (cantilever: joints grouted afterwards)",
@@ -16,6 +19,12 @@ void add_joint_contact_keys(input::Schema& s,
   s.integer("joints.static_increments", "5", "-",
             "contact: increments of the static load beyond the dead weight")
       .between(1, 1000);
+}
+
+double read_restitution(const input::Case& c)
+{
+  return c.boolean("joints.impact_correction") ? c.real("joints.restitution")
+                                               : -1.0;
 }
 
 joint::StaticContactSettings read_joint_statics(const input::Case& c)
@@ -31,8 +40,9 @@ void refuse_contact_keys_when_bonded(const input::Case& c,
 {
   if (c.string("joints.model") == "contact")
     return;
-  std::vector<std::string> all = {"joints.restitution", "joints.dead_load",
-                                  "joints.static_increments"};
+  std::vector<std::string> all = {
+      "joints.restitution", "joints.impact_correction", "joints.dead_load",
+      "joints.static_increments"};
   all.insert(all.end(), keys.begin(), keys.end());
   for (const auto& key : all)
   {

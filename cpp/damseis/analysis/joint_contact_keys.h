@@ -11,10 +11,13 @@
 
 namespace damseis::analysis
 {
-/// joints.restitution, joints.dead_load (default `dead_load_default`),
-/// joints.static_increments.
+/// joints.restitution, joints.impact_correction, joints.dead_load (default
+/// `dead_load_default`), joints.static_increments.
 void add_joint_contact_keys(input::Schema& s,
                             const std::string& dead_load_default);
+
+/// The restitution of the impact correction, or -1 without it.
+double read_restitution(const input::Case& c);
 
 /// The static stage's settings of the keys above.
 joint::StaticContactSettings read_joint_statics(const input::Case& c);

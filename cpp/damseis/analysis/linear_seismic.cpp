@@ -376,6 +376,11 @@ std::vector<joint::PairFace> LinearSeismicAnalysis::pair_faces() const
       for (std::int32_t b : fem::owned_blocks_on(*_fe.V(), tags, tag))
         mine.push_back(map.local_range()[0] + b);
     joint::PairFace f{name, linalg::all_gather(_comm, mine)};
+    if (_mpc.mat()) // the pairs' blocks are in the reduced numbering
+    {
+      f.blocks = fem::reduced_blocks(_mpc.mat(), 3, f.blocks);
+      std::erase(f.blocks, -1); // midside nodes: not contact pairs
+    }
     std::sort(f.blocks.begin(), f.blocks.end());
     faces.push_back(std::move(f));
   }

@@ -35,7 +35,7 @@ struct ContactJoints
   std::vector<joint::JointSpec> joints;
   /// The facet tags the joints' tags refer to.
   const dolfinx::mesh::MeshTags<std::int32_t>* facet_tags = nullptr;
-  double restitution = 1.0; ///< impact correction: e in [0, 1]
+  double restitution = 1.0; ///< impact correction: e in [0, 1]; < 0: none
   joint::StaticContactSettings statics;
   double tolerance = 1e-8; ///< coincidence of the pair nodes [m]
 };

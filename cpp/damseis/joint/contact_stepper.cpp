@@ -56,6 +56,22 @@ ContactStepper::ContactStepper(Mat M, Mat K, dynamics::RayleighDamping damping,
   MatMult(M, ones.vec(), row_sums.vec());
   const double scale = sum(row_sums.vec()) / sum(d.vec());
   _mass = at_pairs(d.vec()) * scale;
+  // Pairs whose two nodes have mass (the others get no impact correction:
+  // a fixed or massless node has no velocity of its own, only Newmark's
+  // by-product of its displacements, and no momentum to exchange).
+  const auto& pairs = _contact->pairs();
+  _movable.assign(pairs.size(), 0);
+  if (rank == 0)
+  {
+    for (std::size_t i = 0; i < pairs.size(); ++i)
+    {
+      const Eigen::Vector3d n2 = pairs.frame[i].col(0).cwiseAbs2();
+      _movable[i] = n2.dot(_mass.segment<3>(_contact->position1(i))) > 0.0 &&
+                    n2.dot(_mass.segment<3>(_contact->position2(i))) > 0.0;
+    }
+  }
+  MPI_Bcast(_movable.data(), static_cast<int>(_movable.size()), MPI_CHAR, 0,
+            comm);
 }
 
 ContactStepper::~ContactStepper()
@@ -102,7 +118,8 @@ dynamics::StepReport ContactStepper::step(Vec f)
   _newmark.step(f);
   _last_iterations = _contact->totals().ncp_iterations - iterations;
   const auto t0 = std::chrono::steady_clock::now();
-  impact_correction(gap_before);
+  if (_e >= 0.0)
+    impact_correction(gap_before);
   _contact->totals().seconds_impact +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
           .count();
@@ -117,7 +134,8 @@ void ContactStepper::impact_correction(const std::vector<double>& gap_before)
   std::vector<std::size_t> closing;
   for (std::size_t i = 0; i < states.size(); ++i)
   {
-    if (gap_before[i] > impact_min_gap && states[i] != contact::PairState::open)
+    if (gap_before[i] > impact_min_gap &&
+        states[i] != contact::PairState::open && _movable[i])
       closing.push_back(i);
   }
   if (closing.empty()) // the same on every rank (replicated states)
@@ -133,13 +151,8 @@ void ContactStepper::impact_correction(const std::vector<double>& gap_before)
     {
       const Eigen::Vector3d n = pairs.frame[i].col(0);
       const int a = _contact->position1(i), b = _contact->position2(i);
-      // Normal masses; a node without mass (fixed) is immovable.
-      double ma = n.cwiseAbs2().dot(_mass.segment<3>(a));
-      double mb = n.cwiseAbs2().dot(_mass.segment<3>(b));
-      if (!(ma > 0.0) && !(mb > 0.0))
-        continue;
-      ma = ma > 0.0 ? ma : 1e12 * mb;
-      mb = mb > 0.0 ? mb : 1e12 * ma;
+      const double ma = n.cwiseAbs2().dot(_mass.segment<3>(a));
+      const double mb = n.cwiseAbs2().dot(_mass.segment<3>(b));
       const contact::NormalVelocities before_impact{n.dot(v.segment<3>(a)),
                                                     n.dot(v.segment<3>(b))};
       const contact::NormalVelocities after =

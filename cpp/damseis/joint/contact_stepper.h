@@ -29,7 +29,8 @@ public:
   /// M (with any added mass), K, damping and scheme as for
   /// dynamics::LinearNewmark; `contact` holds the pairs and the contact
   /// state the run starts from (the static stage's); `u_static` the
-  /// displacement it starts from (copied); `restitution` e in [0, 1].
+  /// displacement it starts from (copied); `restitution` e in [0, 1], or
+  /// negative for no impact correction.
   ContactStepper(Mat M, Mat K, dynamics::RayleighDamping damping,
                  dynamics::TimeScheme scheme,
                  std::shared_ptr<CondensedContact> contact, Vec u_static,
@@ -68,7 +69,8 @@ private:
   double _e;
   VecScatter _to_root = nullptr; ///< pair unknowns to rank 0
   Vec _pair_values = nullptr;
-  Eigen::VectorXd _mass; ///< lumped mass at the pair unknowns (rank 0)
+  Eigen::VectorXd _mass;      ///< lumped mass at the pair unknowns (rank 0)
+  std::vector<char> _movable; ///< both nodes of the pair have mass
   long _last_iterations = 0;
   std::array<dolfinx::la::petsc::Vector, 3> _restored;
 };
