@@ -119,7 +119,7 @@ void CondensedContact::factorize(Mat K_eff)
   {
     try
     {
-      _L = _schur->schur_complement();
+      _L = _schur->take_schur_complement();
       cholesky(_L);
       set_up_flexibility();
     }

@@ -33,6 +33,9 @@ public:
   std::span<const PetscInt> unknowns() const;
   /// S, full symmetric (rank 0; 0 x 0 on other ranks).
   const Eigen::MatrixXd& schur_complement() const { return _S; }
+  /// S moved out (the solver keeps none: condense and expand do not need
+  /// it).
+  Eigen::MatrixXd take_schur_complement() { return std::move(_S); }
   /// The forward half of a solve of A x = b (collective): y = b_s - A_si
   /// A_ii^-1 b_i on rank 0. Keeps the interior part for expand().
   void condense(Vec b, Eigen::VectorXd& y);
