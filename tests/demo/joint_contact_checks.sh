@@ -74,6 +74,19 @@ OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
   --out "$work/p1_2" --set output.plots=false --set output.every=100000 \
   --set time.hht_alpha=-0.1 --set mesh.order=1 "${contact[@]}" >/dev/null
 
+# A cube held only by its joint cannot carry its dead weight on its own
+# (joints.dead_load = "cantilever"): one line saying so, exit code 4.
+status=0
+"$dm" --case "$case" --out "$work/cantilever" --set output.plots=false \
+  --set joints.model=contact --set joints.dead_load=cantilever \
+  >/dev/null 2>"$work/cantilever.err" || status=$?
+if [ "$status" -ne 4 ] || ! grep -q 'a block has no support but its joints' \
+  "$work/cantilever.err"; then
+  echo "FAIL cantilever dead load on a floating block: exit $status, $(cat "$work/cantilever.err")"
+  exit 1
+fi
+echo "ok   cantilever dead load on a floating block: $(cat "$work/cantilever.err")"
+
 "$python" - "$work" <<'PY'
 import csv, json, sys
 work = sys.argv[1]

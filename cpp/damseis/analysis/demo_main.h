@@ -9,6 +9,7 @@
 #include <damseis/dynamics/nonlinear_newmark.h>
 #include <damseis/engine/stop_signals.h>
 #include <damseis/input/command_line.h>
+#include <damseis/joint/condensed_contact.h>
 #include <damseis/results/output_folder.h>
 #include <damseis/results/progress.h>
 #include <filesystem>
@@ -93,6 +94,18 @@ int demo_main(int argc, char** argv, const std::string& name,
     if (rank == 0)
       std::fprintf(stderr, "%s: %s\n", name.c_str(), e.what());
     status = 3;
+  }
+  catch (const joint::ContactFailure& e)
+  {
+    // The contact of the joints failed (the run stops rather than accept
+    // the step).
+    if (rank == 0)
+      std::fprintf(stderr, "%s: error: %s%s\n", name.c_str(), e.what(),
+                   std::string(e.what()).find("static stage") ==
+                           std::string::npos
+                       ? "; try a smaller time.dt or time.hht_alpha = -0.1"
+                       : "");
+    status = 4;
   }
   catch (const dynamics::StepFailure& e)
   {

@@ -229,7 +229,7 @@ void CondensedContact::solve(Vec rhs, Vec u, Vec r)
     msg << "the joint contact problem did not converge (" << n
         << " pairs, residual " << tail[4] << " after "
         << static_cast<int>(tail[1]) << " Newton iterations)";
-    throw dynamics::StepFailure(msg.str());
+    throw ContactFailure(msg.str());
   }
   _p = Eigen::Map<const Eigen::VectorXd>(outcome.data(), 3 * n);
   _w = Eigen::Map<const Eigen::VectorXd>(outcome.data() + 3 * n, 3 * n);

@@ -12,6 +12,7 @@
 #include "pairs.h"
 #include <damseis/contact/ncp.h>
 #include <damseis/dynamics/newmark.h>
+#include <damseis/dynamics/nonlinear_newmark.h>
 #include <damseis/linalg/schur_solver.h>
 #include <map>
 #include <memory>
@@ -26,6 +27,13 @@ namespace damseis::joint
 struct NotPositiveDefinite : std::runtime_error
 {
   using std::runtime_error::runtime_error;
+};
+
+/// The joint contact problem of a step did not converge (a StepFailure:
+/// the run stops rather than accept it); the message says what to try.
+struct ContactFailure : dynamics::StepFailure
+{
+  using dynamics::StepFailure::StepFailure;
 };
 
 /// Work and events over the solves so far.

@@ -21,9 +21,10 @@ StaticContactResult static_contact(Mat K, Mat M, double omega_1, Vec F_dead,
   {
     // A block held by its joints alone: its rigid motions are free in K.
     if (settings.cantilever_dead_load)
-      throw std::runtime_error(
-          "a block has no support but its joints, so it cannot carry its "
-          "dead weight alone: use joints.dead_load = \"joints_active\"");
+      throw ContactFailure(
+          "static stage: a block has no support but its joints, so it "
+          "cannot carry its dead weight alone; use joints.dead_load = "
+          "\"joints_active\"");
     r.shift = static_shift_factor * omega_1 * omega_1;
     Mat Ks;
     MatDuplicate(K, MAT_COPY_VALUES, &Ks);
@@ -46,9 +47,10 @@ StaticContactResult static_contact(Mat K, Mat M, double omega_1, Vec F_dead,
     {
       c.solve(rhs.vec(), r.u.vec(), force.vec());
     }
-    catch (const dynamics::StepFailure& e)
+    catch (const ContactFailure& e)
     {
-      throw dynamics::StepFailure("static stage, " + what + ": " + e.what());
+      throw ContactFailure("static stage, " + what + ": " + e.what() +
+                           "; try more joints.static_increments");
     }
   };
 

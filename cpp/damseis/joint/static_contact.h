@@ -35,9 +35,9 @@ struct StaticContactResult
 /// K u = F + G p with the contact of `pairs`: F_dead first (one increment),
 /// then F_dead + k/n (F_all - F_dead), k = 1..n. With blocks held by their
 /// joints alone, K + shift M with shift = static_shift_factor omega_1^2.
-/// Collective. Throws dynamics::StepFailure naming the increment if contact
-/// does not converge, std::runtime_error if the dead load is carried by the
-/// cantilevers alone while a block has no support of its own.
+/// Collective. Throws ContactFailure naming the increment if contact does
+/// not converge, or if the dead load is carried by the cantilevers alone
+/// while a block has no support of its own.
 StaticContactResult static_contact(Mat K, Mat M, double omega_1, Vec F_dead,
                                    Vec F_all, const PairSet& pairs,
                                    const StaticContactSettings& settings,
