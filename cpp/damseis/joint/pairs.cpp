@@ -36,6 +36,39 @@ Vec3 point(const dolfinx::mesh::Mesh& mesh, std::int32_t i)
   return {x[3 * i], x[3 * i + 1], x[3 * i + 2]};
 }
 
+/// A facet tagged `tag` whose (single) cell is owned here, and the facet's
+/// local index in that cell: each boundary facet once over the ranks.
+struct FacetOfCell
+{
+  std::int32_t facet, cell;
+  int local;
+};
+
+std::vector<FacetOfCell>
+owned_facets(const dolfinx::mesh::Mesh& mesh,
+             const dolfinx::mesh::MeshTags<std::int32_t>& facet_tags, int tag)
+{
+  const int tdim = mesh.topology().dim();
+  mesh.topology_mutable().create_connectivity(tdim - 1, tdim);
+  mesh.topology_mutable().create_connectivity(tdim, tdim - 1);
+  const auto f_to_c = mesh.topology().connectivity(tdim - 1, tdim);
+  const auto c_to_f = mesh.topology().connectivity(tdim, tdim - 1);
+  const std::int32_t owned_cells =
+      mesh.topology().index_map(tdim)->size_local();
+  std::vector<FacetOfCell> out;
+  for (std::int32_t f : geometry::tagged_entities(facet_tags, {tag}))
+  {
+    const std::int32_t c = f_to_c->links(f)[0];
+    if (c >= owned_cells)
+      continue;
+    const auto cf = c_to_f->links(c);
+    out.push_back({f, c,
+                   static_cast<int>(std::distance(
+                       cf.begin(), std::find(cf.begin(), cf.end(), f)))});
+  }
+  return out;
+}
+
 /// Area-weighted normals (global block, n_x, n_y, n_z) at the nodes of the
 /// facets tagged `tag` whose cell is owned here: each facet's normal points
 /// out of its cell (side 1 into side 2).
@@ -45,22 +78,11 @@ node_normals(const dolfinx::fem::FunctionSpace& V,
 {
   const auto& mesh = *V.mesh();
   const int tdim = mesh.topology().dim();
-  mesh.topology_mutable().create_connectivity(tdim - 1, tdim);
-  mesh.topology_mutable().create_connectivity(tdim, tdim - 1);
-  const auto f_to_c = mesh.topology().connectivity(tdim - 1, tdim);
-  const auto c_to_f = mesh.topology().connectivity(tdim, tdim - 1);
-  const std::int32_t owned_cells =
-      mesh.topology().index_map(tdim)->size_local();
   const auto& dofmap = *V.dofmap();
   const auto& layout = dofmap.element_dof_layout();
-  const auto facets = geometry::tagged_entities(facet_tags, {tag});
-
   std::vector<double> out;
-  for (std::int32_t f : facets)
+  for (const auto [f, c, local] : owned_facets(mesh, facet_tags, tag))
   {
-    const std::int32_t c = f_to_c->links(f)[0];
-    if (c >= owned_cells)
-      continue;
     const auto fx = dolfinx::mesh::entities_to_geometry(
         mesh, tdim - 1, std::span<const std::int32_t>(&f, 1), false);
     const auto cx = dolfinx::mesh::entities_to_geometry(
@@ -73,9 +95,6 @@ node_normals(const dolfinx::fem::FunctionSpace& V,
       centre += point(mesh, node) / static_cast<double>(cx.size());
     if (n.dot((a + b + d) / 3.0 - centre) < 0.0)
       n = -n;
-    const auto cf = c_to_f->links(c);
-    const int local = static_cast<int>(
-        std::distance(cf.begin(), std::find(cf.begin(), cf.end(), f)));
     const auto cell_dofs = dofmap.cell_dofs(c);
     for (int k : layout.entity_closure_dofs(tdim - 1, local))
     {
@@ -99,24 +118,12 @@ edge_midpoints(const dolfinx::fem::FunctionSpace& V,
   std::vector<std::int64_t> out;
   if (layout.num_entity_dofs(1) == 0)
     return out;
-  mesh.topology_mutable().create_connectivity(tdim - 1, tdim);
-  mesh.topology_mutable().create_connectivity(tdim, tdim - 1);
-  const auto f_to_c = mesh.topology().connectivity(tdim - 1, tdim);
-  const auto c_to_f = mesh.topology().connectivity(tdim, tdim - 1);
-  const std::int32_t owned_cells =
-      mesh.topology().index_map(tdim)->size_local();
   const auto cell_type = mesh.topology().cell_type();
   const auto facet_vertices =
       dolfinx::mesh::get_entity_vertices(cell_type, tdim - 1);
   const auto edge_vertices = dolfinx::mesh::get_entity_vertices(cell_type, 1);
-  for (std::int32_t f : geometry::tagged_entities(facet_tags, {tag}))
+  for (const auto [f, c, lf] : owned_facets(mesh, facet_tags, tag))
   {
-    const std::int32_t c = f_to_c->links(f)[0];
-    if (c >= owned_cells)
-      continue;
-    const auto cf = c_to_f->links(c);
-    const int lf = static_cast<int>(
-        std::distance(cf.begin(), std::find(cf.begin(), cf.end(), f)));
     const auto fv = facet_vertices.links(lf);
     const auto cell_dofs = dofmap.cell_dofs(c);
     for (int e = 0; e < edge_vertices.num_nodes(); ++e)
