@@ -26,7 +26,7 @@ int infog(const DMUMPS_STRUC_C& id, int i)
 struct SchurSolver::Mumps
 {
   DMUMPS_STRUC_C id{};
-  std::vector<MUMPS_INT> irn, jcn, listvar;
+  std::vector<MUMPS_INT> irn, jcn, listvar, perm;
   std::vector<double> a, schur, redrhs;
   std::vector<PetscInt> unknowns;
   VecScatter to_root = nullptr; ///< the distributed vector to b_seq on rank 0
@@ -140,6 +140,29 @@ SchurSolver::SchurSolver(Mat A, std::span<const PetscInt> schur)
   id.jcn_loc = m.jcn.data();
   id.a_loc = m.a.data();
   const int ns = static_cast<int>(m.unknowns.size());
+  // The pivot order. With a Schur complement this MUMPS orders by AMD only
+  // (PORD requests are replaced), which on the 3D arch dam gives 1.7x the
+  // factor entries and 3x the flops; so the order comes from an analysis
+  // without the Schur complement (PORD), the Schur unknowns moved last.
+  m.call(1, "analysis for the pivot order");
+  if (m.rank == 0)
+  {
+    std::vector<char> in_schur(static_cast<std::size_t>(N), 0);
+    for (PetscInt s : m.unknowns)
+      in_schur[s] = 1;
+    std::vector<PetscInt> order(static_cast<std::size_t>(N));
+    for (PetscInt i = 0; i < N; ++i)
+      order[id.sym_perm[i] - 1] = i;
+    m.perm.assign(static_cast<std::size_t>(N), 0);
+    MUMPS_INT next = 1;
+    for (PetscInt i : order)
+      if (!in_schur[i])
+        m.perm[i] = next++;
+    for (PetscInt s : m.unknowns)
+      m.perm[s] = next++;
+    id.perm_in = m.perm.data();
+  }
+  icntl(id, 7) = 1;
   id.size_schur = ns;
   if (m.rank == 0)
   {
