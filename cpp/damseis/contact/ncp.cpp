@@ -180,9 +180,9 @@ Eigen::VectorXd contact_residual(const ContactProblem& c,
 
 namespace
 {
-/// The damped semismooth Newton iteration from p0.
+/// The damped semismooth Newton iteration from p0, w0 = w_free + W p0.
 NcpReport newton(const ContactProblem& c, const Eigen::VectorXd& p0,
-                 const NcpSettings& s)
+                 const Eigen::VectorXd& w0, const NcpSettings& s)
 {
   const Eigen::Index n = static_cast<Eigen::Index>(c.laws.size());
   const bool reduced = c.W_inv.rows() == 3 * n && n > 0;
@@ -201,7 +201,7 @@ NcpReport newton(const ContactProblem& c, const Eigen::VectorXd& p0,
   }
   scale = std::max(scale, p0.lpNorm<Eigen::Infinity>());
   std::vector<PairResidual> blocks;
-  rep.w = c.w_free + c.W * rep.p;
+  rep.w = w0;
   Eigen::VectorXd F = residual_at(c, rep.p, rep.w, rep.states, &blocks);
   double psi = 0.5 * F.squaredNorm();
   for (rep.iterations = 0; rep.iterations < s.max_iterations; ++rep.iterations)
@@ -292,18 +292,23 @@ NcpReport solve_ncp(const ContactProblem& c, const Eigen::VectorXd& p0,
   // change of load: the bonded solution, from which only the pairs in
   // tension open and those past the friction limit slide). Newton starts
   // from the one of smaller residual, and from the other if it fails.
+  // (Each start's w = w_free + W p is computed once, for the choice and for
+  // Newton.)
   const Eigen::VectorXd stuck = stuck_forces(c);
-  auto merit = [&](const Eigen::VectorXd& p)
+  const Eigen::VectorXd w_warm = c.w_free + c.W * p0;
+  const Eigen::VectorXd w_stuck = c.w_free + c.W * stuck;
+  auto merit = [&](const Eigen::VectorXd& p, const Eigen::VectorXd& w)
   {
     std::vector<PairState> st;
-    const Eigen::VectorXd w = c.w_free + c.W * p;
     return residual_at(c, p, w, st, nullptr).squaredNorm();
   };
-  const bool warm_first = merit(p0) <= merit(stuck);
-  NcpReport first = newton(c, warm_first ? p0 : stuck, s);
+  const bool warm_first = merit(p0, w_warm) <= merit(stuck, w_stuck);
+  NcpReport first =
+      warm_first ? newton(c, p0, w_warm, s) : newton(c, stuck, w_stuck, s);
   if (first.converged)
     return first;
-  NcpReport second = newton(c, warm_first ? stuck : p0, s);
+  NcpReport second =
+      warm_first ? newton(c, stuck, w_stuck, s) : newton(c, p0, w_warm, s);
   second.iterations += first.iterations;
   second.line_search_steps += first.line_search_steps;
   second.gradient_steps += first.gradient_steps;

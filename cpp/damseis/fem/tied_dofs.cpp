@@ -6,12 +6,12 @@
 #include <cmath>
 #include <damseis/geometry/tagged.h>
 #include <damseis/linalg/all_gather.h>
-#include <damseis/linalg/direct_solver.h>
 #include <dolfinx/common/IndexMap.h>
 #include <dolfinx/fem/DirichletBC.h>
 #include <dolfinx/fem/DofMap.h>
 #include <dolfinx/mesh/Mesh.h>
 #include <numeric>
+#include <petscksp.h>
 #include <stdexcept>
 
 namespace damseis::fem
@@ -122,17 +122,29 @@ Vec restrict_to_tied(Mat P, Vec x)
   MatMultTranspose(P, x, rhs);
   Mat PtP;
   MatTransposeMatMult(P, P, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &PtP);
-  MPI_Comm comm = PetscObjectComm(reinterpret_cast<PetscObject>(P));
-  int size = 1;
-  MPI_Comm_size(comm, &size);
-  {
-    linalg::DirectSolver solver(comm, size == 1 ? linalg::Factorization::petsc
-                                                : linalg::Factorization::mumps);
-    solver.factorize(PtP);
-    solver.solve(rhs, xr);
-  }
+  // Conjugate gradients with Jacobi: P^T P is diagonal for ties (one
+  // iteration, the mean) and well conditioned for the midside constraints
+  // (weights 1 and 1/2), where a factorisation would cost more than it
+  // saves.
+  KSP ksp;
+  KSPCreate(PetscObjectComm(reinterpret_cast<PetscObject>(P)), &ksp);
+  KSPSetOperators(ksp, PtP, PtP);
+  KSPSetType(ksp, KSPCG);
+  PC pc;
+  KSPGetPC(ksp, &pc);
+  PCSetType(pc, PCJACOBI);
+  KSPSetTolerances(ksp, 1e-14, 0.0, PETSC_DEFAULT, 1000);
+  KSPSolve(ksp, rhs, xr);
+  KSPConvergedReason reason;
+  KSPGetConvergedReason(ksp, &reason);
+  KSPDestroy(&ksp);
   MatDestroy(&PtP);
   VecDestroy(&rhs);
+  if (reason < 0)
+  {
+    VecDestroy(&xr);
+    throw std::runtime_error("restrict_to_tied: CG did not converge");
+  }
   return xr;
 }
 } // namespace damseis::fem
