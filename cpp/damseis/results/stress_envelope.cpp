@@ -31,6 +31,19 @@ StressEnvelope::StressEnvelope(const dolfinx::fem::FunctionSpace& S,
         _in_region[d] = 1;
     }
   }
+  finite_outside_region();
+}
+
+void StressEnvelope::finite_outside_region()
+{
+  // Points outside the region are never updated nor read; 0 rather than
+  // the +-infinity the tracked points start from, so that a checkpoint
+  // (which takes non-finite values for damage) can hold the envelope.
+  for (std::size_t i = 0; i < _in_region.size(); ++i)
+  {
+    if (!_in_region[i])
+      _max[i] = _min[i] = 0.0;
+  }
 }
 
 StressEnvelope::StressEnvelope(int ncomp, std::span<const double> x,
@@ -45,6 +58,7 @@ StressEnvelope::StressEnvelope(int ncomp, std::span<const double> x,
   _x.resize(n);
   for (std::size_t i = 0; i < n; ++i)
     _x[i] = {x[3 * i], x[3 * i + 1], x[3 * i + 2]};
+  finite_outside_region();
 }
 
 void StressEnvelope::update(std::span<const double> s, double t)

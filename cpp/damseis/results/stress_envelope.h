@@ -69,6 +69,8 @@ public:
   int components() const { return _ncomp; }
 
 private:
+  /// Sets the points outside the region to 0 (see the .cpp).
+  void finite_outside_region();
   int _ncomp;
   std::vector<double> _max, _min, _t_max, _t_min;
   std::vector<std::array<double, 3>> _x;
