@@ -9,14 +9,21 @@ using dolfinx::la::petsc::Vector;
 const std::array<const char*, 3> state_names = {"u", "v", "a"};
 } // namespace
 
-LinearStepper::LinearStepper(Mat M, Mat K, dynamics::RayleighDamping damping,
-                             dynamics::TimeScheme scheme,
-                             linalg::Factorization factorization,
-                             const std::vector<Mat>& extra_damping)
-    : _K(K), _newmark(M, K, damping, scheme, factorization, extra_damping),
+LinearStepper::LinearStepper(
+    Mat M, Mat K, dynamics::RayleighDamping damping,
+    dynamics::TimeScheme scheme, linalg::Factorization factorization,
+    const std::vector<Mat>& extra_damping,
+    std::shared_ptr<dynamics::ConstrainedSolve> constrained, Vec u_start)
+    : _K(K), _newmark(M, K, damping, scheme, factorization, extra_damping,
+                      std::move(constrained)),
       _restored{Vector(nullptr, false), Vector(nullptr, false),
                 Vector(nullptr, false)}
 {
+  if (u_start)
+  {
+    _u_start = Vector(create_vector(), false);
+    VecCopy(u_start, _u_start.vec());
+  }
 }
 
 Vec LinearStepper::create_vector() const
@@ -30,7 +37,9 @@ Vec LinearStepper::create_vector() const
 void LinearStepper::start(Vec u0, Vec v0, Vec a0, Vec f0)
 {
   Vector zero(create_vector(), false);
-  _newmark.set_state(u0 ? u0 : zero.vec(), v0 ? v0 : zero.vec(), a0, f0);
+  if (!u0)
+    u0 = _u_start.vec() ? _u_start.vec() : zero.vec();
+  _newmark.set_state(u0, v0 ? v0 : zero.vec(), a0, f0);
 }
 
 dynamics::StepReport LinearStepper::step(Vec f)

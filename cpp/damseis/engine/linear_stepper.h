@@ -12,12 +12,15 @@ namespace damseis::engine
 class LinearStepper : public Stepper
 {
 public:
-  /// M, K and the extra damping matrices: see dynamics::LinearNewmark. The
-  /// initial displacement (start with u0 null) is zero.
-  LinearStepper(Mat M, Mat K, dynamics::RayleighDamping damping,
-                dynamics::TimeScheme scheme,
-                linalg::Factorization factorization,
-                const std::vector<Mat>& extra_damping = {});
+  /// M, K, the extra damping matrices and the constrained solve: see
+  /// dynamics::LinearNewmark. The initial displacement (start with u0
+  /// null) is `u_start` (copied), or zero if null.
+  LinearStepper(
+      Mat M, Mat K, dynamics::RayleighDamping damping,
+      dynamics::TimeScheme scheme, linalg::Factorization factorization,
+      const std::vector<Mat>& extra_damping = {},
+      std::shared_ptr<dynamics::ConstrainedSolve> constrained = nullptr,
+      Vec u_start = nullptr);
 
   Vec create_vector() const override;
   void start(Vec u0, Vec v0, Vec a0, Vec f0) override;
@@ -31,9 +34,13 @@ public:
   std::string solver_name() const override { return _newmark.solver_name(); }
   double factor_seconds() const override { return _newmark.factor_seconds(); }
 
+protected:
+  dynamics::LinearNewmark& newmark() { return _newmark; }
+
 private:
   Mat _K;
   dynamics::LinearNewmark _newmark;
+  dolfinx::la::petsc::Vector _u_start{nullptr, false}; ///< null: zero
   /// u, v, a read from a checkpoint until resume().
   std::array<dolfinx::la::petsc::Vector, 3> _restored;
 };

@@ -10,7 +10,6 @@ namespace damseis::joint
 namespace
 {
 using dolfinx::la::petsc::Vector;
-const std::array<const char*, 3> state_names = {"u", "v", "a"};
 
 double sum(Vec x)
 {
@@ -24,16 +23,11 @@ ContactStepper::ContactStepper(Mat M, Mat K, dynamics::RayleighDamping damping,
                                dynamics::TimeScheme scheme,
                                std::shared_ptr<CondensedContact> contact,
                                Vec u_static, double restitution)
-    : _K(K), _contact(std::move(contact)),
-      _newmark(M, K, damping, scheme, linalg::Factorization::automatic, {},
-               _contact),
-      _e(restitution), _restored{Vector(nullptr, false), Vector(nullptr, false),
-                                 Vector(nullptr, false)}
+    : engine::LinearStepper(M, K, damping, scheme,
+                            linalg::Factorization::automatic, {}, contact,
+                            u_static),
+      _contact(std::move(contact)), _e(restitution)
 {
-  _u_static = Vector(create_vector(), false);
-  if (u_static)
-    VecCopy(u_static, _u_static.vec());
-
   // The pair unknowns gathered on rank 0.
   MPI_Comm comm = PetscObjectComm(reinterpret_cast<PetscObject>(K));
   int rank = 0;
@@ -80,14 +74,6 @@ ContactStepper::~ContactStepper()
   VecDestroy(&_pair_values);
 }
 
-Vec ContactStepper::create_vector() const
-{
-  Vec x;
-  MatCreateVecs(_K, &x, nullptr);
-  VecSet(x, 0.0);
-  return x;
-}
-
 Eigen::VectorXd ContactStepper::at_pairs(Vec x) const
 {
   VecScatterBegin(_to_root, x, _pair_values, INSERT_VALUES, SCATTER_FORWARD);
@@ -101,12 +87,6 @@ Eigen::VectorXd ContactStepper::at_pairs(Vec x) const
   return out;
 }
 
-void ContactStepper::start(Vec u0, Vec v0, Vec a0, Vec f0)
-{
-  Vector zero(create_vector(), false);
-  _newmark.set_state(u0 ? u0 : _u_static.vec(), v0 ? v0 : zero.vec(), a0, f0);
-}
-
 dynamics::StepReport ContactStepper::step(Vec f)
 {
   std::vector<double> gap_before(_contact->pairs().size());
@@ -115,7 +95,7 @@ dynamics::StepReport ContactStepper::step(Vec f)
                         ? _contact->gap(i)
                         : 0.0;
   const long iterations = _contact->totals().ncp_iterations;
-  _newmark.step(f);
+  engine::LinearStepper::step(f);
   _last_iterations = _contact->totals().ncp_iterations - iterations;
   const auto t0 = std::chrono::steady_clock::now();
   if (_e >= 0.0)
@@ -141,7 +121,7 @@ void ContactStepper::impact_correction(const std::vector<double>& gap_before)
   if (closing.empty()) // the same on every rank (replicated states)
     return;
   _contact->totals().impacts += static_cast<long>(closing.size());
-  const Eigen::VectorXd v = at_pairs(_newmark.v());
+  const Eigen::VectorXd v = at_pairs(engine::LinearStepper::v());
   Vector dv(create_vector(), false);
   if (v.size() > 0) // rank 0
   {
@@ -166,14 +146,12 @@ void ContactStepper::impact_correction(const std::vector<double>& gap_before)
   }
   VecAssemblyBegin(dv.vec());
   VecAssemblyEnd(dv.vec());
-  _newmark.correct_velocity(dv.vec());
+  newmark().correct_velocity(dv.vec());
 }
 
 void ContactStepper::save(engine::Arrays& arrays) const
 {
-  const std::array<Vec, 3> x = {u(), v(), a()};
-  for (int i = 0; i < 3; ++i)
-    arrays[state_names[i]] = linalg::owned_values(x[i]);
+  engine::LinearStepper::save(arrays);
   const CondensedContact& c = *_contact;
   auto to_vector = [](const Eigen::VectorXd& x)
   { return std::vector<double>(x.data(), x.data() + x.size()); };
@@ -195,12 +173,7 @@ void ContactStepper::save(engine::Arrays& arrays) const
 
 void ContactStepper::restore(const engine::CheckpointData& data)
 {
-  for (int i = 0; i < 3; ++i)
-  {
-    _restored[i] = Vector(create_vector(), false);
-    linalg::set_owned_values(_restored[i].vec(),
-                             engine::checkpoint_array(data, state_names[i]));
-  }
+  engine::LinearStepper::restore(data);
   const std::size_t n = _contact->pairs().size();
   auto read = [&](const char* name, std::size_t size)
   {
@@ -222,14 +195,6 @@ void ContactStepper::restore(const engine::CheckpointData& data)
   totals.gradient_steps = static_cast<long>(t[3]);
   totals.state_changes = static_cast<long>(t[4]);
   totals.impacts = static_cast<long>(t[5]);
-}
-
-void ContactStepper::resume(Vec f)
-{
-  _newmark.set_state(_restored[0].vec(), _restored[1].vec(), _restored[2].vec(),
-                     f);
-  for (auto& x : _restored)
-    x = Vector(nullptr, false);
 }
 
 std::string ContactStepper::progress_note(const dynamics::StepReport&) const

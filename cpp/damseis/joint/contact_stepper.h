@@ -8,9 +8,7 @@
 #pragma once
 
 #include "condensed_contact.h"
-#include <array>
-#include <damseis/dynamics/newmark.h>
-#include <damseis/engine/parts.h>
+#include <damseis/engine/linear_stepper.h>
 #include <dolfinx/la/petsc.h>
 #include <memory>
 
@@ -23,7 +21,7 @@ namespace damseis::joint
 /// engineers read (millimetres), far above the solver's gap precision.
 constexpr double impact_min_gap = 1e-6; // m
 
-class ContactStepper : public engine::Stepper
+class ContactStepper : public engine::LinearStepper
 {
 public:
   /// M (with any added mass), K, damping and scheme as for
@@ -37,18 +35,12 @@ public:
                  double restitution);
   ~ContactStepper() override;
 
-  Vec create_vector() const override;
-  void start(Vec u0, Vec v0, Vec a0, Vec f0) override;
   dynamics::StepReport step(Vec f) override;
-  Vec u() const override { return _newmark.u(); }
-  Vec v() const override { return _newmark.v(); }
-  Vec a() const override { return _newmark.a(); }
+  /// The linear stepper's state and the contact state (forces, relative
+  /// displacements, gap references, pair states, totals).
   void save(engine::Arrays& arrays) const override;
   void restore(const engine::CheckpointData& data) override;
-  void resume(Vec f) override;
   std::string progress_note(const dynamics::StepReport&) const override;
-  std::string solver_name() const override { return _newmark.solver_name(); }
-  double factor_seconds() const override { return _newmark.factor_seconds(); }
 
   const CondensedContact& contact() const { return *_contact; }
   /// NCP iterations of the last step.
@@ -62,16 +54,12 @@ private:
   /// The values of x at the pair nodes' unknowns, on rank 0.
   Eigen::VectorXd at_pairs(Vec x) const;
 
-  Mat _K;
   std::shared_ptr<CondensedContact> _contact;
-  dynamics::LinearNewmark _newmark;
-  dolfinx::la::petsc::Vector _u_static{nullptr, false};
   double _e;
   VecScatter _to_root = nullptr; ///< pair unknowns to rank 0
   Vec _pair_values = nullptr;
   Eigen::VectorXd _mass;      ///< lumped mass at the pair unknowns (rank 0)
   std::vector<char> _movable; ///< both nodes of the pair have mass
   long _last_iterations = 0;
-  std::array<dolfinx::la::petsc::Vector, 3> _restored;
 };
 } // namespace damseis::joint
