@@ -1,57 +1,95 @@
 #include "static_contact.h"
-#include <damseis/dynamics/nonlinear_newmark.h>
+#include <cmath>
 #include <damseis/linalg/petsc_vectors.h>
+#include <sstream>
 
 namespace damseis::joint
 {
+namespace
+{
+/// The proximal-point iteration of one load F (static_contact.h), with the
+/// pairs' contact (`solve`) or without (`free`); u holds the start and gets
+/// the solution. Returns the iterations; throws ContactFailure when the
+/// iterates stop converging (a rigid motion nobody holds).
+template <typename Solve>
+int relax(Mat M, double shift, Vec F, Vec u, const Solve& solve,
+          const std::string& what, const std::string& advice)
+{
+  using dolfinx::la::petsc::Vector;
+  Vector rhs = linalg::column_vector(M), u_old = linalg::column_vector(M);
+  double change_old = 0.0;
+  for (int k = 1; k <= static_max_iterations; ++k)
+  {
+    VecCopy(u, u_old.vec());
+    MatMult(M, u, rhs.vec());
+    VecAYPX(rhs.vec(), shift, F); // rhs = F + s M u_k
+    try
+    {
+      solve(rhs.vec(), u);
+    }
+    catch (const ContactFailure& e)
+    {
+      throw ContactFailure(what + ": " + e.what() +
+                           "; try more joints.static_increments");
+    }
+    VecAXPY(u_old.vec(), -1.0, u);
+    double change = 0.0, size = 0.0;
+    VecNorm(u_old.vec(), NORM_INFINITY, &change);
+    VecNorm(u, NORM_INFINITY, &size);
+    if (!std::isfinite(change))
+      break;
+    if (change <= static_tolerance * size)
+      return k;
+    // Elastic errors shrink 1000x per iteration; a rigid motion no joint
+    // holds moves by the same amount each time. Round-off stops the first
+    // at static_round_off.
+    const bool stalled = k >= 3 && change > 0.5 * change_old;
+    if (stalled && change <= static_round_off * size)
+      return k;
+    if (stalled)
+    {
+      std::ostringstream msg;
+      msg << what << ": no static equilibrium (the displacement still "
+          << "changes by " << change << " m per iteration after " << k << ")"
+          << advice;
+      throw ContactFailure(msg.str());
+    }
+    change_old = change;
+  }
+  throw ContactFailure(what + ": no static equilibrium (no convergence in " +
+                       std::to_string(static_max_iterations) + " iterations)" +
+                       advice);
+}
+} // namespace
+
 StaticContactResult static_contact(Mat K, Mat M, double omega_1, Vec F_dead,
                                    Vec F_all, const PairSet& pairs,
                                    const StaticContactSettings& settings,
                                    contact::NcpSettings ncp)
 {
   using dolfinx::la::petsc::Vector;
-  CondensedContact c(pairs, ncp);
   StaticContactResult r;
-  dolfinx::la::petsc::Matrix K_shifted(nullptr, false);
-  try
-  {
-    c.factorize(K);
-  }
-  catch (const NotPositiveDefinite&)
-  {
-    // A block held by its joints alone: its rigid motions are free in K.
-    if (settings.cantilever_dead_load)
-      throw ContactFailure(
-          "static stage: a block has no support but its joints, so it "
-          "cannot carry its dead weight alone; use joints.dead_load = "
-          "\"joints_active\"");
-    r.shift = static_shift_factor * omega_1 * omega_1;
-    Mat Ks;
-    MatDuplicate(K, MAT_COPY_VALUES, &Ks);
-    MatAXPY(Ks, r.shift, M, SUBSET_NONZERO_PATTERN);
-    K_shifted = dolfinx::la::petsc::Matrix(Ks, false);
-    c = CondensedContact(pairs, ncp);
-    c.factorize(K_shifted.mat());
-  }
+  r.shift = static_shift_factor * omega_1 * omega_1;
+  Mat Ks;
+  MatDuplicate(K, MAT_COPY_VALUES, &Ks);
+  MatAXPY(Ks, r.shift, M, SUBSET_NONZERO_PATTERN);
+  dolfinx::la::petsc::Matrix K_shifted(Ks, false);
+  CondensedContact c(pairs, ncp);
+  c.factorize(K_shifted.mat());
+
   const std::size_t n = pairs.size();
   r.u = linalg::column_vector(K);
-  Vector rhs = linalg::column_vector(K), force = linalg::column_vector(K);
+  Vector F = linalg::column_vector(K), force = linalg::column_vector(K);
+  auto with_contact = [&](Vec rhs, Vec u) { c.solve(rhs, u, force.vec()); };
 
   auto increment = [&](double load_factor, const std::string& what)
   {
-    // rhs = F_dead + factor (F_all - F_dead)
-    VecCopy(F_dead, rhs.vec());
-    VecScale(rhs.vec(), 1.0 - load_factor);
-    VecAXPY(rhs.vec(), load_factor, F_all);
-    try
-    {
-      c.solve(rhs.vec(), r.u.vec(), force.vec());
-    }
-    catch (const ContactFailure& e)
-    {
-      throw ContactFailure("static stage, " + what + ": " + e.what() +
-                           "; try more joints.static_increments");
-    }
+    // F = F_dead + factor (F_all - F_dead)
+    VecCopy(F_dead, F.vec());
+    VecScale(F.vec(), 1.0 - load_factor);
+    VecAXPY(F.vec(), load_factor, F_all);
+    r.iterations += relax(M, r.shift, F.vec(), r.u.vec(), with_contact, what,
+                          "; a block slides or is not held");
   };
 
   if (settings.cantilever_dead_load)
@@ -59,7 +97,12 @@ StaticContactResult static_contact(Mat K, Mat M, double omega_1, Vec F_dead,
     // The blocks carry their own weight; the joints are closed (grouted)
     // in that state, with no force: the gaps' reference and the slips are
     // measured from it.
-    c.solve_free(F_dead, r.u.vec());
+    r.iterations += relax(
+        M, r.shift, F_dead, r.u.vec(),
+        [&](Vec rhs, Vec u) { c.solve_free(rhs, u); },
+        "static stage, dead weight on the cantilevers",
+        ": a block has no support but its joints, so it cannot carry its "
+        "dead weight alone; use joints.dead_load = \"joints_active\"");
     const Eigen::VectorXd w = c.relative_of(r.u.vec());
     Eigen::VectorXd g0(n);
     for (std::size_t i = 0; i < n; ++i)
@@ -68,11 +111,12 @@ StaticContactResult static_contact(Mat K, Mat M, double omega_1, Vec F_dead,
                 std::vector<contact::PairState>(n, contact::PairState::stick));
   }
   else
-    increment(0.0, "dead weight");
+    increment(0.0, "static stage, dead weight");
   const int m = std::max(settings.increments, 1);
   for (int k = 1; k <= m; ++k)
-    increment(static_cast<double>(k) / m,
-              "load increment " + std::to_string(k) + "/" + std::to_string(m));
+    increment(static_cast<double>(k) / m, "static stage, load increment " +
+                                              std::to_string(k) + "/" +
+                                              std::to_string(m));
   r.g0 = c.g0();
   r.w = c.relative_displacement();
   r.p = c.forces();

@@ -4,6 +4,17 @@
 // they are grouted after the blocks carry their own weight: the gaps and
 // slips are then measured from the dead-load state), then the rest of the
 // static load (water, silt, ...) in increments with contact active.
+//
+// A block may be held by its joints alone (no support of its own): K is
+// then singular, and whether a factorisation of it notices depends on its
+// rounding. So the static stage never factorises K: it solves K u = F + G p
+// by the proximal-point iteration
+//   (K + s M) u_k+1 = F + G p_k+1 + s M u_k,   s = static_shift_factor
+//   omega_1^2 (omega_1: the lowest circular frequency of the bonded model),
+// with the contact of each iterate. Its fixed point is the static solution;
+// the error of each elastic mode j shrinks by s / (s + omega_j^2) <= 1/1000
+// per iteration (a few iterations), and a rigid motion that no joint holds
+// does not shrink at all: no static equilibrium, reported as such.
 #pragma once
 
 #include "condensed_contact.h"
@@ -17,11 +28,17 @@ struct StaticContactSettings
   int increments = 5; ///< for the load beyond the dead weight (>= 1)
 };
 
-/// A block held only by its joints (no support of its own) makes K
-/// singular: the static stage then solves with K + shift M, shift = 1e-6
-/// omega_1^2 (omega_1 the lowest circular frequency of the bonded model):
-/// the inertia-like term changes the elastic response by about 1e-6.
-constexpr double static_shift_factor = 1e-6;
+/// s = static_shift_factor omega_1^2 (see above).
+constexpr double static_shift_factor = 1e-3;
+/// The iteration has converged when no unknown changes by more than this
+/// times the largest displacement.
+constexpr double static_tolerance = 1e-10;
+/// When the changes stop shrinking below this times the largest
+/// displacement, round-off has been reached (the conditioning of a block
+/// held by its joints alone: measured 1e-9 on tests/data's sliding block).
+constexpr double static_round_off = 1e-7;
+/// Iterations per load increment before giving up.
+constexpr int static_max_iterations = 40;
 
 struct StaticContactResult
 {
@@ -29,15 +46,16 @@ struct StaticContactResult
   Eigen::VectorXd g0, w, p; ///< the pairs' gap reference, w and forces
   std::vector<contact::PairState> states;
   ContactTotals totals; ///< the static solves' work
-  double shift = 0.0;   ///< the mass shift used (0: none; K was regular)
+  double shift = 0.0;   ///< s [1/s^2]
+  int iterations = 0;   ///< proximal-point iterations over all increments
 };
 
 /// K u = F + G p with the contact of `pairs`: F_dead first (one increment),
-/// then F_dead + k/n (F_all - F_dead), k = 1..n. With blocks held by their
-/// joints alone, K + shift M with shift = static_shift_factor omega_1^2.
-/// Collective. Throws ContactFailure naming the increment if contact does
-/// not converge, or if the dead load is carried by the cantilevers alone
-/// while a block has no support of its own.
+/// then F_dead + k/n (F_all - F_dead), k = 1..n. Collective. Throws
+/// ContactFailure naming the increment if contact does not converge, if
+/// there is no static equilibrium (a block slides or is not held), or if
+/// the dead load is carried by the cantilevers alone while a block has no
+/// support of its own.
 StaticContactResult static_contact(Mat K, Mat M, double omega_1, Vec F_dead,
                                    Vec F_all, const PairSet& pairs,
                                    const StaticContactSettings& settings,
