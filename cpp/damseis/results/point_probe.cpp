@@ -1,12 +1,20 @@
 #include "point_probe.h"
+#include "progress.h"
 #include <cmath>
 #include <dolfinx/common/IndexMap.h>
 #include <dolfinx/fem/DofMap.h>
 #include <dolfinx/mesh/Mesh.h>
 #include <limits>
+#include <sstream>
 
 namespace damseis::results
 {
+namespace
+{
+/// Nodes closer than this [m] are coincident (the joints' pair tolerance).
+constexpr double coincident = 1e-8;
+} // namespace
+
 PointProbe::PointProbe(const dolfinx::fem::FunctionSpace& V,
                        std::array<double, 3> x)
 {
@@ -39,6 +47,25 @@ PointProbe::PointProbe(const dolfinx::fem::FunctionSpace& V,
     _node = {coords[3 * best], coords[3 * best + 1], coords[3 * best + 2]};
   }
   MPI_Bcast(_node.data(), 3, MPI_DOUBLE, global.rank, comm);
+
+  // Coincident nodes (a joint's two faces): which one is taken depends on
+  // the numbering, so on the number of ranks.
+  int tied = 0;
+  for (std::int32_t i = 0; i < n; ++i)
+  {
+    tied += std::hypot(coords[3 * i] - _node[0], coords[3 * i + 1] - _node[1],
+                       coords[3 * i + 2] - _node[2]) <= coincident;
+  }
+  MPI_Allreduce(MPI_IN_PLACE, &tied, 1, MPI_INT, MPI_SUM, comm);
+  if (tied > 1)
+  {
+    std::ostringstream msg;
+    msg << "the output point (" << x[0] << ", " << x[1] << ", " << x[2]
+        << ") is on " << tied
+        << " coincident nodes (a joint's faces): the one taken may change "
+           "with the number of MPI ranks; move the point off the joint";
+    warn(comm, msg.str());
+  }
 }
 
 std::array<double, 3> PointProbe::value(Vec u) const
