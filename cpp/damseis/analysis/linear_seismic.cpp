@@ -423,7 +423,10 @@ json LinearSeismicAnalysis::results()
                           : "joints active"},
         {"increments", _contact->statics.increments},
         {"mass_shift_per_s2", _static_contact->shift},
+        {"iterations", _static_contact->iterations},
         {"ncp_iterations", _static_contact->totals.ncp_iterations}};
+    summary["joints"]["static_stage"].update(
+        joint::write_static_pairs(_comm, dir, *_pairs, *_static_contact));
     summary["joints"]["restitution"] = _contact->restitution;
   }
   summary["wall_seconds"] = seconds_since(_wall_start);

@@ -207,4 +207,42 @@ nlohmann::json JointRecorder::write(MPI_Comm comm,
             {"impact_correction", t.seconds_impact},
             {"flexibility_setup", t.seconds_setup}}}};
 }
+
+nlohmann::json write_static_pairs(MPI_Comm comm,
+                                  const std::filesystem::path& dir,
+                                  const PairSet& pairs,
+                                  const StaticContactResult& s)
+{
+  static const char* state_name[] = {"open", "stick", "slip"};
+  Eigen::Vector3d total = Eigen::Vector3d::Zero();
+  int open = 0;
+  std::ofstream out;
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  if (rank == 0)
+  {
+    out.open(dir / "joint_static.csv");
+    out << "joint,x,y,z,gap_cm,state,P_n_kN,P_a_kN,P_b_kN,f_x_kN,f_y_kN,"
+           "f_z_kN\n";
+  }
+  for (std::size_t i = 0; i < pairs.size(); ++i)
+  {
+    const Eigen::Vector3d p = s.p.segment<3>(3 * i);
+    const Eigen::Vector3d f = pairs.frame[i] * p;
+    total += f;
+    open += s.states[i] == contact::PairState::open;
+    if (rank != 0)
+      continue;
+    out << pairs.joints[pairs.joint[i]].label << "," << pairs.x[i][0] << ","
+        << pairs.x[i][1] << "," << pairs.x[i][2] << ","
+        << 100.0 * (s.g0[i] + s.w[3 * i]) << ","
+        << state_name[static_cast<int>(s.states[i])];
+    for (double v : {p[0], p[1], p[2], f[0], f[1], f[2]})
+      out << "," << v / 1e3;
+    out << "\n";
+  }
+  return {
+      {"pairs_open", open},
+      {"force_on_side2_kN", {total[0] / 1e3, total[1] / 1e3, total[2] / 1e3}}};
+}
 } // namespace damseis::joint

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "contact_stepper.h"
+#include "static_contact.h"
 #include <damseis/engine/parts.h>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -22,6 +23,16 @@ struct PairFace
   std::string name;
   std::vector<std::int64_t> blocks; ///< sorted
 };
+
+/// Writes joint_static.csv into `dir` (rank 0): per pair after the static
+/// stage its gap [cm], state (open, stick, slip) and force on side 2, in
+/// the pair's frame (P_n: compression positive; P_a along t_a, P_b) and in
+/// x, y, z [kN]. Returns the summary's entries: the totals of the joints'
+/// forces in x, y, z and the pairs open.
+nlohmann::json write_static_pairs(MPI_Comm comm,
+                                  const std::filesystem::path& dir,
+                                  const PairSet& pairs,
+                                  const StaticContactResult& s);
 
 class JointRecorder : public engine::Observer
 {
