@@ -14,6 +14,10 @@ steps=${3:-1000}
 shift $(( $# < 3 ? $# : 3 ))
 extra=("$@")
 report=$root/bench/results/contact-$(date +%Y-%m-%d).md
+for suffix in b c d e f; do # keep the earlier reports of the day
+  [ -e "$report" ] || break
+  report=$root/bench/results/contact-$(date +%Y-%m-%d)$suffix.md
+done
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1

@@ -197,10 +197,9 @@ void PointStates::record(int k, double)
       {
         double* row = &_hist[((k * n + p) * 4) * _dim];
         row[q * _dim + c] = value[c] - (q == 0 ? _static[p][c] : 0.0);
-        // The absolute acceleration on the owner (0 elsewhere: summed).
+        // The absolute acceleration: the owners' shares (summed).
         if (q == 2)
-          row[3 * _dim + c] =
-              value[c] + (_probes[p].owned() ? _ground(k, c) : 0.0);
+          row[3 * _dim + c] = value[c] + _probes[p].share() * _ground(k, c);
       }
     }
   }

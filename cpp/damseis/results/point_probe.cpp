@@ -42,41 +42,38 @@ PointProbe::PointProbe(const dolfinx::fem::FunctionSpace& V,
   MPI_Allreduce(&local, &global, 1, MPI_DOUBLE_INT, MPI_MINLOC, comm);
   _distance = global.d;
   if (global.rank == local.rank)
-  {
-    _local = best;
     _node = {coords[3 * best], coords[3 * best + 1], coords[3 * best + 2]};
-  }
   MPI_Bcast(_node.data(), 3, MPI_DOUBLE, global.rank, comm);
 
-  // Coincident nodes (a joint's two faces): which one is taken depends on
-  // the numbering, so on the number of ranks.
-  int tied = 0;
+  // Coincident nodes (a joint's two faces): the probe is their mean, the
+  // same whatever the numbering (so the number of ranks).
   for (std::int32_t i = 0; i < n; ++i)
   {
-    tied += std::hypot(coords[3 * i] - _node[0], coords[3 * i + 1] - _node[1],
-                       coords[3 * i + 2] - _node[2]) <= coincident;
+    if (std::hypot(coords[3 * i] - _node[0], coords[3 * i + 1] - _node[1],
+                   coords[3 * i + 2] - _node[2]) <= coincident)
+      _local.push_back(i);
   }
-  MPI_Allreduce(MPI_IN_PLACE, &tied, 1, MPI_INT, MPI_SUM, comm);
-  if (tied > 1)
+  _count = static_cast<int>(_local.size());
+  MPI_Allreduce(MPI_IN_PLACE, &_count, 1, MPI_INT, MPI_SUM, comm);
+  if (_count > 1)
   {
     std::ostringstream msg;
-    msg << "the output point (" << x[0] << ", " << x[1] << ", " << x[2]
-        << ") is on " << tied
-        << " coincident nodes (a joint's faces): the one taken may change "
-           "with the number of MPI ranks; move the point off the joint";
-    warn(comm, msg.str());
+    msg << "output point (" << x[0] << ", " << x[1] << ", " << x[2]
+        << "): on a joint, the mean of its " << _count << " coincident nodes";
+    print(comm, msg.str());
   }
 }
 
 std::array<double, 3> PointProbe::value(Vec u) const
 {
   std::array<double, 3> v = {0, 0, 0};
-  if (_local < 0)
+  if (_local.empty())
     return v;
   const double* a = nullptr;
   VecGetArrayRead(u, &a);
-  for (int k = 0; k < _bs; ++k)
-    v[k] = a[_local * _bs + k];
+  for (std::int32_t i : _local)
+    for (int k = 0; k < _bs; ++k)
+      v[k] += a[i * _bs + k] / _count;
   VecRestoreArrayRead(u, &a);
   return v;
 }
