@@ -6,7 +6,8 @@ front of it (upstream face from upstream, downstream face from downstream).
 
 Usage: plot_arch_dam.py OUT_DIR
 Reads crest.csv, face_upstream.csv, face_downstream.csv and summary.json;
-writes crest_history.png and face_envelopes.png.
+writes crest_history.png and face_envelopes.png (and, with contact joints,
+joints_along_axis.png and joint_histories.png: plot_joints.py).
 """
 import json
 import sys
@@ -18,6 +19,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.tri as mtri  # noqa: E402
 import numpy as np  # noqa: E402
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from plot_joints import plot_joint_histories, plot_joints  # noqa: E402
 
 
 def plot_crest(out: Path, summary: dict) -> None:
@@ -108,6 +112,9 @@ def main() -> None:
     summary = json.loads((out / "summary.json").read_text())
     plot_crest(out, summary)
     plot_faces(out, summary)
+    if (out / "joint_table.csv").exists():
+        plot_joints(out)
+        plot_joint_histories(out)
 
 
 if __name__ == "__main__":

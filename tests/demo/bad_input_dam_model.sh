@@ -5,7 +5,8 @@
 # load on interior facets, a degenerate cell, a point outside the model,
 # contact joints misconfigured (2D, no joints, friction count or sign,
 # restitution outside [0, 1], a keyed joint that is not a joint, contact
-# keys with bonded joints, with HTC concrete, an unknown dead-load option):
+# keys with bonded joints, with HTC concrete, an unknown dead-load option,
+# joint history points not in threes):
 # one line naming the file, the key and the fix,
 # exit code 2, nothing written.
 # Usage: bad_input_dam_model.sh DAM_MODEL SOURCE_DIR
@@ -47,6 +48,7 @@ expect dm_contact_restitution 'joints\.restitution=1\.5 is out of range; expecte
 expect dm_contact_keyed_unknown 'joints\.keyed: names "joint_right", which is not a joint' --case "$block" --set joints.model=contact --set 'joints.keyed=[joint_right]'
 expect dm_contact_keys_bonded 'joints\.friction: is given while joints\.model = "bonded"' --case "$block" --set 'joints.friction=[0.5]'
 expect dm_contact_concrete 'joints\.model: is "contact" with material\.model = "plastic"' --case "$block" --set joints.model=contact --set material.model=plastic
+expect dm_contact_history_points 'joints\.history_points: has 4 values, not 3 coordinates per point' --case "$block" --set joints.model=contact --set 'joints.history_points=[0, 0, 1, 2]'
 expect dm_contact_dead_load 'joints\.dead_load=glued is not an allowed value; expected one of "joints_active", "cantilever"' --case "$block" --set joints.model=contact --set joints.dead_load=glued
 
 if [ "$failures" -ne 0 ]; then

@@ -54,6 +54,8 @@ ArchDamModel arch_dam_model(MPI_Comm comm, const ArchDamConfig& cfg)
     c.facet_tags = arch.model.facet_tags.get();
     c.restitution = cfg.restitution;
     c.statics = cfg.statics;
+    c.history_points = cfg.history_points;
+    c.ncp = cfg.ncp;
     m.contact = std::move(c);
   }
 

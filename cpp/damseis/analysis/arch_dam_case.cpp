@@ -98,6 +98,8 @@ void read_joint_contact(const input::Case& c, ArchDamConfig& a)
   }
   a.restitution = read_restitution(c);
   a.statics = read_joint_statics(c);
+  a.history_points = read_joint_history_points(c);
+  a.ncp = read_ncp_settings(c);
 }
 } // namespace
 

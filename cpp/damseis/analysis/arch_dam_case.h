@@ -33,6 +33,8 @@ struct ArchDamConfig
   std::string keyed; ///< labels of the keyed joints
   double restitution = 1.0;
   joint::StaticContactSettings statics;
+  std::vector<std::array<double, 3>> history_points;
+  contact::NcpSettings ncp;
   SeismicSettings seismic;
 };
 

@@ -122,6 +122,8 @@ DamModel dam_model(MPI_Comm comm, const DamModelConfig& cfg)
     c.facet_tags = cfg.group_facets.get();
     c.restitution = cfg.contact.restitution;
     c.statics = cfg.contact.statics;
+    c.history_points = cfg.contact.history_points;
+    c.ncp = cfg.contact.ncp;
     c.tolerance = cfg.joint_tolerance;
     m.contact = std::move(c);
   }

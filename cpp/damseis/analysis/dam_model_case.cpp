@@ -630,6 +630,8 @@ void read_joint_contact(const input::Case& c, DamModelConfig& cfg)
   }
   jc.restitution = read_restitution(c);
   jc.statics = read_joint_statics(c);
+  jc.history_points = read_joint_history_points(c);
+  jc.ncp = read_ncp_settings(c);
 }
 
 /// The roles of the groups: regions, supports, reservoir, joints, loads,

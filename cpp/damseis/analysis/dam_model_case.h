@@ -45,6 +45,8 @@ struct JointContactConfig
   std::vector<bool> keyed;      ///< per joint
   double restitution = 1.0;
   joint::StaticContactSettings statics;
+  std::vector<std::array<double, 3>> history_points;
+  contact::NcpSettings ncp;
 };
 
 struct DamModelConfig

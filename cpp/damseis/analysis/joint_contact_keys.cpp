@@ -19,6 +19,15 @@ void add_joint_contact_keys(input::Schema& s,
   s.integer("joints.static_increments", "5", "-",
             "contact: increments of the static load beyond the dead weight")
       .between(1, 1000);
+  s.string("joints.formulation", "alart_curnier", "-",
+           "contact: the NCP's unknowns, Cartesian (Alart-Curnier) or the "
+           "paper's polar form (P_n, P_tau, theta); bench/results/"
+           "ncp-formulations-*.md compares them",
+           {"alart_curnier", "paper"});
+  s.real_array("joints.history_points", "[]", "m",
+               "contact: points (x, y, z each) whose nearest pairs' opening "
+               "and sliding are recorded per step (joint_histories.csv); "
+               "[]: the top pair of each joint");
 }
 
 double read_restitution(const input::Case& c)
@@ -35,14 +44,39 @@ joint::StaticContactSettings read_joint_statics(const input::Case& c)
   return s;
 }
 
+contact::NcpSettings read_ncp_settings(const input::Case& c)
+{
+  contact::NcpSettings s;
+  s.formulation = c.string("joints.formulation") == "paper"
+                      ? contact::Formulation::paper
+                      : contact::Formulation::alart_curnier;
+  return s;
+}
+
+std::vector<std::array<double, 3>>
+read_joint_history_points(const input::Case& c)
+{
+  const auto x = c.reals("joints.history_points");
+  if (x.size() % 3 != 0)
+    c.fail("joints.history_points",
+           "has " + std::to_string(x.size()) +
+               " values, not 3 coordinates per point",
+           "x, y, z of each point, one after the other");
+  std::vector<std::array<double, 3>> points;
+  for (std::size_t i = 0; i < x.size(); i += 3)
+    points.push_back({x[i], x[i + 1], x[i + 2]});
+  return points;
+}
+
 void refuse_contact_keys_when_bonded(const input::Case& c,
                                      const std::vector<std::string>& keys)
 {
   if (c.string("joints.model") == "contact")
     return;
   std::vector<std::string> all = {
-      "joints.restitution", "joints.impact_correction", "joints.dead_load",
-      "joints.static_increments"};
+      "joints.restitution",    "joints.impact_correction",
+      "joints.dead_load",      "joints.static_increments",
+      "joints.history_points", "joints.formulation"};
   all.insert(all.end(), keys.begin(), keys.end());
   for (const auto& key : all)
   {

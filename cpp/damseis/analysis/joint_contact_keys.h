@@ -4,6 +4,8 @@
 // demos add their own keys for which joints and their friction.
 #pragma once
 
+#include <array>
+#include <damseis/contact/ncp.h>
 #include <damseis/input/case.h>
 #include <damseis/joint/static_contact.h>
 #include <string>
@@ -21,6 +23,15 @@ double read_restitution(const input::Case& c);
 
 /// The static stage's settings of the keys above.
 joint::StaticContactSettings read_joint_statics(const input::Case& c);
+
+/// joints.formulation: the NCP's form (algorithms.md 2.3, 2.4).
+contact::NcpSettings read_ncp_settings(const input::Case& c);
+
+/// joints.history_points: points (3 coordinates each) whose nearest pairs'
+/// opening and sliding are recorded per step (empty: each joint's top
+/// pair).
+std::vector<std::array<double, 3>>
+read_joint_history_points(const input::Case& c);
 
 /// Fails (input::InputError) if one of `keys` (the contact keys above and
 /// the demo's own) is given while joints.model is not "contact".

@@ -214,7 +214,7 @@ void LinearSeismicAnalysis::static_stage()
         2.0 * std::numbers::pi * _modal->modes.frequencies_hz.front();
     _static_contact =
         joint::static_contact(_K.mat(), _M.mat(), omega_1, _F_g.vec(), _F.vec(),
-                              *_pairs, _contact->statics);
+                              *_pairs, _contact->statics, _contact->ncp);
     VecCopy(_static_contact->u.vec(), _u_static.vec());
     _static_seconds += seconds_since(t0);
   }
@@ -242,7 +242,8 @@ void LinearSeismicAnalysis::time_history()
   // displacement and the static load is sustained.
   if (_contact)
   {
-    auto contact = std::make_shared<joint::CondensedContact>(*_pairs);
+    auto contact =
+        std::make_shared<joint::CondensedContact>(*_pairs, _contact->ncp);
     const joint::StaticContactResult& st = *_static_contact;
     contact->set_state(st.g0, st.w, st.p, st.states);
     auto stepper = std::make_unique<joint::ContactStepper>(
@@ -358,8 +359,8 @@ void LinearSeismicAnalysis::add_recorders(engine::TimeHistory& history)
   history.observe(*_fields);
   if (_contact_stepper)
   {
-    _joints = std::make_unique<joint::JointRecorder>(*_contact_stepper,
-                                                     _static_contact->w);
+    _joints = std::make_unique<joint::JointRecorder>(
+        *_contact_stepper, _static_contact->w, _contact->history_points);
     history.observe(*_joints);
   }
 }

@@ -37,7 +37,11 @@ struct ContactJoints
   const dolfinx::mesh::MeshTags<std::int32_t>* facet_tags = nullptr;
   double restitution = 1.0; ///< impact correction: e in [0, 1]; < 0: none
   joint::StaticContactSettings statics;
-  double tolerance = 1e-8; ///< coincidence of the pair nodes [m]
+  /// Points whose nearest pairs are recorded per step (empty: each
+  /// joint's top pair).
+  std::vector<std::array<double, 3>> history_points;
+  contact::NcpSettings ncp; ///< the pair problem's formulation, tolerance
+  double tolerance = 1e-8;  ///< coincidence of the pair nodes [m]
 };
 
 /// The analysis on `fe` (materials and fixed boundaries already set)

@@ -1,4 +1,5 @@
 #include "ncp.h"
+#include "paper_ncp.h"
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -188,18 +189,7 @@ NcpReport newton(const ContactProblem& c, const Eigen::VectorXd& p0,
   const bool reduced = c.W_inv.rows() == 3 * n && n > 0;
   NcpReport rep;
   rep.p = p0;
-  // Force scale: the largest force that closes a free gap or stops a free
-  // slip, or the warm start's.
-  double scale = 1e-300;
-  for (Eigen::Index i = 0; i < n; ++i)
-  {
-    scale =
-        std::max({scale, c.laws[i].r_n * std::abs(c.g0[i] + c.w_free[3 * i]),
-                  c.laws[i].r_t * (c.w_free.segment<2>(3 * i + 1) -
-                                   c.wT_old.segment<2>(2 * i))
-                                      .norm()});
-  }
-  scale = std::max(scale, p0.lpNorm<Eigen::Infinity>());
+  const double scale = force_scale(c, p0);
   std::vector<PairResidual> blocks;
   rep.w = w0;
   Eigen::VectorXd F = residual_at(c, rep.p, rep.w, rep.states, &blocks);
@@ -271,6 +261,21 @@ NcpReport newton(const ContactProblem& c, const Eigen::VectorXd& p0,
 }
 } // namespace
 
+double force_scale(const ContactProblem& c, const Eigen::VectorXd& p0)
+{
+  double scale = 1e-300;
+  for (std::size_t i = 0; i < c.laws.size(); ++i)
+  {
+    const Eigen::Index k = static_cast<Eigen::Index>(i);
+    scale =
+        std::max({scale, c.laws[i].r_n * std::abs(c.g0[k] + c.w_free[3 * k]),
+                  c.laws[i].r_t * (c.w_free.segment<2>(3 * k + 1) -
+                                   c.wT_old.segment<2>(2 * k))
+                                      .norm()});
+  }
+  return std::max(scale, p0.lpNorm<Eigen::Infinity>());
+}
+
 Eigen::VectorXd stuck_forces(const ContactProblem& c)
 {
   // F = 0 with every pair closed and stuck: w_n = -g0, w_T = w_T,old, i.e.
@@ -287,6 +292,8 @@ Eigen::VectorXd stuck_forces(const ContactProblem& c)
 NcpReport solve_ncp(const ContactProblem& c, const Eigen::VectorXd& p0,
                     const NcpSettings& s)
 {
+  if (s.formulation == Formulation::paper)
+    return solve_ncp_paper(c, p0, s);
   // Two starting points: the warm start (the last step's forces: best when
   // little changes) and the forces of the joints stuck (best after a large
   // change of load: the bonded solution, from which only the pairs in

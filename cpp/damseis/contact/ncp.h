@@ -25,10 +25,19 @@ struct ContactProblem
   Eigen::VectorXd g0;     ///< n: initial gaps (0: closed joints)
 };
 
+/// The NCP's unknowns and residual: the Cartesian Alart-Curnier form
+/// (alart_curnier.h) or the paper's polar form (paper_ncp.h).
+enum class Formulation
+{
+  alart_curnier,
+  paper
+};
+
 struct NcpSettings
 {
   double tol = 1e-10;      ///< |F| <= tol * force scale
   int max_iterations = 50; ///< Newton iterations
+  Formulation formulation = Formulation::alart_curnier;
 };
 
 struct NcpReport
@@ -58,13 +67,19 @@ void write_problem(const ContactProblem& c, const Eigen::VectorXd& p0,
                    const std::string& file);
 ContactProblem read_problem(const std::string& file, Eigen::VectorXd& p0);
 
+/// The force scale of the convergence test: the largest force that closes
+/// a free gap or stops a free slip (r_n |g0 + w_free,n|, r_t |ds_free|),
+/// or the largest of p0.
+double force_scale(const ContactProblem& c, const Eigen::VectorXd& p0);
+
 /// The forces with every pair closed and stuck (F = 0 on the stick branch:
 /// the bonded joints' forces).
 Eigen::VectorXd stuck_forces(const ContactProblem& c);
 
 /// Solves the contact problem from p0 (warm start: the last step's forces)
 /// or from stuck_forces(), whichever has the smaller residual, then from
-/// the other if Newton fails; the report counts both attempts.
+/// the other if Newton fails; the report counts both attempts. In the
+/// formulation of `s` (the paper's: solve_ncp_paper of paper_ncp.h).
 NcpReport solve_ncp(const ContactProblem& c, const Eigen::VectorXd& p0,
                     const NcpSettings& s = {});
 } // namespace damseis::contact

@@ -33,16 +33,56 @@ std::pair<double, int> largest(const PairSet& pairs, std::size_t j,
 std::string cm(double metres)
 {
   char s[32];
-  std::snprintf(s, sizeof s, "%.2f", 100.0 * metres);
+  std::snprintf(s, sizeof s, "%.4f", 100.0 * metres);
   return s;
 }
 } // namespace
 
 JointRecorder::JointRecorder(const ContactStepper& stepper,
-                             Eigen::VectorXd w_static)
+                             Eigen::VectorXd w_static,
+                             const std::vector<std::array<double, 3>>& points)
     : _stepper(stepper), _w_static(std::move(w_static))
 {
-  const std::size_t n = stepper.contact().pairs().size();
+  const PairSet& pairs = stepper.contact().pairs();
+  const std::size_t n = pairs.size();
+  if (points.empty())
+  {
+    // The top pair of each joint.
+    for (std::size_t j = 0; j < pairs.joints.size(); ++j)
+    {
+      int top = -1;
+      for (std::size_t i = 0; i < n; ++i)
+      {
+        if (pairs.joint[i] == static_cast<int>(j) &&
+            (top < 0 || pairs.x[i][2] > pairs.x[top][2]))
+          top = static_cast<int>(i);
+      }
+      if (top >= 0)
+      {
+        _probe.push_back(top);
+        _probe_name.push_back(pairs.joints[j].label + "_top");
+      }
+    }
+  }
+  for (std::size_t k = 0; k < points.size(); ++k)
+  {
+    int best = -1;
+    double d_best = 0.0;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      const double d =
+          std::hypot(pairs.x[i][0] - points[k][0], pairs.x[i][1] - points[k][1],
+                     pairs.x[i][2] - points[k][2]);
+      if (best < 0 || d < d_best)
+      {
+        best = static_cast<int>(i);
+        d_best = d;
+      }
+    }
+    _probe.push_back(best);
+    _probe_name.push_back(pairs.joints[pairs.joint[best]].label + "_p" +
+                          std::to_string(k + 1));
+  }
   _open.assign(n, 0.0);
   _t_open.assign(n, 0.0);
   _slide.assign(n, 0.0);
@@ -76,6 +116,13 @@ void JointRecorder::record(int, double t)
     sliding += c.states()[i] == contact::PairState::slip;
     widest = std::max(widest, gap);
   }
+  _histories.push_back(t);
+  for (int i : _probe)
+  {
+    _histories.push_back(std::max(c.gap(i), 0.0));
+    _histories.push_back(
+        (w.segment<2>(3 * i + 1) - _w_static.segment<2>(3 * i + 1)).norm());
+  }
   _steps.insert(_steps.end(),
                 {t, static_cast<double>(open), static_cast<double>(sliding),
                  widest, static_cast<double>(_stepper.last_ncp_iterations())});
@@ -88,6 +135,7 @@ void JointRecorder::save(engine::Arrays& arrays) const
   arrays["joint_slide"] = _slide;
   arrays["joint_t_slide"] = _t_slide;
   arrays["joint_steps"] = _steps;
+  arrays["joint_histories"] = _histories;
 }
 
 void JointRecorder::restore(const engine::CheckpointData& data)
@@ -98,8 +146,28 @@ void JointRecorder::restore(const engine::CheckpointData& data)
   _slide = engine::checkpoint_array(data, "joint_slide", n);
   _t_slide = engine::checkpoint_array(data, "joint_t_slide", n);
   _steps = engine::checkpoint_array(data, "joint_steps");
-  if (_steps.size() % step_columns != 0)
-    throw std::runtime_error("checkpoint array joint_steps is damaged");
+  _histories = engine::checkpoint_array(data, "joint_histories");
+  if (_steps.size() % step_columns != 0 ||
+      _histories.size() % (1 + 2 * _probe.size()) != 0)
+    throw std::runtime_error("checkpoint array joint_steps or "
+                             "joint_histories is damaged");
+}
+
+void JointRecorder::write_histories(const std::filesystem::path& file) const
+{
+  std::ofstream h(file);
+  h << "t_s";
+  for (const auto& name : _probe_name)
+    h << "," << name << "_opening_cm," << name << "_sliding_cm";
+  h << "\n";
+  const std::size_t columns = 1 + 2 * _probe.size();
+  for (std::size_t k = 0; k < _histories.size(); k += columns)
+  {
+    h << _histories[k];
+    for (std::size_t c = 1; c < columns; ++c)
+      h << "," << 100.0 * _histories[k + c];
+    h << "\n";
+  }
 }
 
 nlohmann::json JointRecorder::write(MPI_Comm comm,
@@ -149,6 +217,7 @@ nlohmann::json JointRecorder::write(MPI_Comm comm,
       s << _steps[k] << "," << _steps[k + 1] << "," << _steps[k + 2] << ","
         << 100.0 * _steps[k + 3] << "," << _steps[k + 4] << "\n";
     }
+    write_histories(dir / "joint_histories.csv");
     // The tables: joints as rows; opening and sliding, overall and per face.
     std::vector<std::string> columns = {"opening"};
     for (const PairFace& f : faces)
@@ -190,12 +259,16 @@ nlohmann::json JointRecorder::write(MPI_Comm comm,
     widest = std::max(widest, _open[i]);
     slide = std::max(slide, _slide[i]);
   }
+  nlohmann::json probes = nlohmann::json::array();
+  for (std::size_t k = 0; k < _probe.size(); ++k)
+    probes.push_back({{"name", _probe_name[k]}, {"x", pairs.x[_probe[k]]}});
   const ContactTotals& t = _stepper.contact().totals();
   return {{"model", "contact"},
           {"pairs", pairs.size()},
           {"max_opening_cm", 100.0 * widest},
           {"max_sliding_cm", 100.0 * slide},
           {"table", table},
+          {"history_pairs", probes},
           {"ncp_iterations", t.ncp_iterations},
           {"line_search_steps", t.line_search_steps},
           {"gradient_steps", t.gradient_steps},

@@ -37,24 +37,35 @@ nlohmann::json write_static_pairs(MPI_Comm comm,
 class JointRecorder : public engine::Observer
 {
 public:
-  /// Sliding is measured from `w_static` (3 per pair). Replicated on every
-  /// rank (the contact state is).
-  JointRecorder(const ContactStepper& stepper, Eigen::VectorXd w_static);
+  /// Sliding is measured from `w_static` (3 per pair). The pairs nearest
+  /// to `points` (empty: each joint's top pair) get histories. Replicated
+  /// on every rank (the contact state is).
+  JointRecorder(const ContactStepper& stepper, Eigen::VectorXd w_static,
+                const std::vector<std::array<double, 3>>& points = {});
   void record(int k, double t) override;
   void save(engine::Arrays& arrays) const override;
   void restore(const engine::CheckpointData& data) override;
 
-  /// Writes joint_pairs.csv, joint_steps.csv, joint_table.csv and
-  /// joint_table.md into `dir` (rank 0) and returns the summary's entries.
+  /// Writes joint_pairs.csv, joint_steps.csv, joint_histories.csv,
+  /// joint_table.csv and joint_table.md into `dir` (rank 0) and returns
+  /// the summary's entries.
   nlohmann::json write(MPI_Comm comm, const std::filesystem::path& dir,
                        const std::vector<PairFace>& faces) const;
 
 private:
+  /// joint_histories.csv: t, then opening and sliding [cm] of each pair.
+  void write_histories(const std::filesystem::path& file) const;
+
   const ContactStepper& _stepper;
   Eigen::VectorXd _w_static;
   /// Per pair: largest opening, its time, largest sliding, its time.
   std::vector<double> _open, _t_open, _slide, _t_slide;
   /// Per step: t, pairs open, pairs sliding, widest opening, NCP iterations.
   std::vector<double> _steps;
+  /// The pairs with histories, their names; per step: t, then opening and
+  /// sliding of each.
+  std::vector<int> _probe;
+  std::vector<std::string> _probe_name;
+  std::vector<double> _histories;
 };
 } // namespace damseis::joint
