@@ -6,7 +6,8 @@ front of it (upstream face from upstream, downstream face from downstream).
 
 Usage: plot_arch_dam.py OUT_DIR
 Reads crest.csv, face_upstream.csv, face_downstream.csv and summary.json;
-writes crest_history.png and face_envelopes.png (and, with contact joints,
+writes crest_history.png, face_envelopes.png, face_arch_cantilever.png
+(the arch and cantilever stress envelopes) (and, with contact joints,
 joints_along_axis.png and joint_histories.png: plot_joints.py).
 """
 import json
@@ -51,24 +52,26 @@ def face_triangulation(x, z):
     return tri
 
 
-def plot_faces(out: Path, summary: dict) -> None:
+def plot_face_maps(out: Path, summary: dict, suffix: str, panels, title: str,
+                   png: str) -> None:
+    """Maps of face envelopes, a row per face (face_<face><suffix>.csv),
+    a column per panel (CSV column, title, summary extreme of the face)."""
     fig, axes = plt.subplots(2, 2, figsize=(13, 8))
+    r = summary.get("away_from_singular_points", {}).get("radius_m")
     for row, face in enumerate(("upstream", "downstream")):
-        d = np.genfromtxt(out / f"face_{face}.csv", delimiter=",", names=True)
+        d = np.genfromtxt(out / f"face_{face}{suffix}.csv", delimiter=",",
+                          names=True)
         # Observer in front of the face: the downstream face is seen looking
         # upstream, so the left bank (x < 0) is on the right.
         x = -d["x_m"] if face == "downstream" else d["x_m"]
         tri = face_triangulation(x, d["z_m"])
-        for col, (key, title) in enumerate(
-                (("max_principal_mpa", "max principal stress (tension +)"),
-                 ("min_principal_mpa", "min principal stress (compression -)"))):
+        for col, (key, what, extreme) in enumerate(panels):
             ax = axes[row, col]
             # Colour range without the points near the dam-rock contact
             # lines (singular: growing with refinement); beyond it the
             # colour saturates.
             v = d[key]
             lo, hi = v.min(), v.max()
-            r = summary.get("away_from_singular_points", {}).get("radius_m")
             if r is not None and "distance_to_singular_m" in d.dtype.names:
                 away = d["distance_to_singular_m"] >= r
                 if away.any():
@@ -80,29 +83,59 @@ def plot_faces(out: Path, summary: dict) -> None:
             cs = ax.tricontourf(tri, np.clip(v, lo, hi), levels=levels,
                                 cmap="RdYlBu_r", extend=extend)
             fig.colorbar(cs, ax=ax, shrink=0.85, label="MPa")
-            kind = ("max_principal_tension_mpa" if col == 0
-                    else "max_principal_compression_mpa")
-            e = summary["faces"][face][kind]
-            ex = -e["x"] if face == "downstream" else e["x"]
-            ax.plot([ex], [e["z"]], "k*", ms=9)
-            away_e = summary["faces"][face].get(
-                "away_from_singular_points", {}).get(kind)
-            note = ("" if away_e is None else
-                    f"; {away_e['value']:.2f} MPa farther than {r:.3g} m "
-                    "from the rock")
-            ax.set_title(f"{face} face: envelope of {title}\n"
-                         f"extreme {e['value']:.2f} MPa at t = {e['t']:.2f} s"
-                         f"{note}", fontsize=9)
+            e, note = extreme(summary["faces"][face])
+            if e is not None:
+                ex = -e["x"] if face == "downstream" else e["x"]
+                ax.plot([ex], [e["z"]], "k*", ms=9)
+                ax.set_title(f"{face} face: envelope of {what}\n"
+                             f"extreme {e['value']:.2f} MPa at t = "
+                             f"{e['t']:.2f} s{note}", fontsize=9)
             ax.set_aspect("equal")
             ax.set_xlabel("x along the dam axis [m]"
                           + (" (mirrored: seen from downstream)"
                              if face == "downstream" else ""))
             ax.set_ylabel("z [m]")
-    fig.suptitle(f"Principal-stress envelopes ({summary.get('stress', 'total')}"
-                 " stress)")
+    fig.suptitle(f"{title} ({summary.get('stress', 'total')} stress)")
     fig.tight_layout()
-    fig.savefig(out / "face_envelopes.png", dpi=120)
+    fig.savefig(out / png, dpi=120)
     plt.close(fig)
+
+
+def plot_faces(out: Path, summary: dict) -> None:
+    r = summary.get("away_from_singular_points", {}).get("radius_m")
+
+    def principal(kind):
+        def extreme(f):
+            away = f.get("away_from_singular_points", {}).get(kind)
+            note = ("" if away is None else
+                    f"; {away['value']:.2f} MPa farther than {r:.3g} m "
+                    "from the rock")
+            return f[kind], note
+        return extreme
+
+    plot_face_maps(out, summary, "", (
+        ("max_principal_mpa", "max principal stress (tension +)",
+         principal("max_principal_tension_mpa")),
+        ("min_principal_mpa", "min principal stress (compression -)",
+         principal("max_principal_compression_mpa"))),
+        "Principal-stress envelopes", "face_envelopes.png")
+    if not (out / "face_upstream_arch_cantilever.csv").exists():
+        return
+
+    def directional(kind):
+        def extreme(f):
+            e = f.get("arch_cantilever_away_from_singular_points", {}).get(kind)
+            return e, ("" if r is None else
+                       f", farther than {r:.3g} m from the rock")
+        return extreme
+
+    plot_face_maps(out, summary, "_arch_cantilever", (
+        ("arch_max_mpa", "largest arch stress (horizontal in the face)",
+         directional("arch_tension_mpa")),
+        ("cantilever_max_mpa", "largest cantilever stress (across it)",
+         directional("cantilever_tension_mpa"))),
+        "Arch and cantilever stress envelopes (tension +)",
+        "face_arch_cantilever.png")
 
 
 def main() -> None:

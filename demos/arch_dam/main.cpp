@@ -6,9 +6,12 @@
 // the keys.
 //
 // The phases of the analysis are below; to build a study of your own, copy
-// this file and change a phase.
+// this file and change a phase. study.joints repeats the analysis for
+// several sets of active joints (the paper's Tables 2-5).
 #include <damseis/analysis/arch_dam_analysis.h>
 #include <damseis/analysis/demo_main.h>
+#include <damseis/analysis/joint_study.h>
+#include <damseis/results/progress.h>
 
 using namespace damseis::analysis;
 
@@ -32,9 +35,30 @@ nlohmann::json analyse(MPI_Comm comm, const ArchDamConfig& config,
   return arch_dam_results(comm, config, model, analysis->results(), out_dir);
 }
 
+// A joint study (study.joints): the analysis above once per set of active
+// joints, each into its subfolder, then the comparison tables.
+nlohmann::json study(MPI_Comm comm, const ArchDamConfig& config,
+                     const std::filesystem::path& out_dir,
+                     const std::string& case_text)
+{
+  if (config.study_joints.empty())
+    return analyse(comm, config, out_dir, case_text);
+  std::vector<JointStudyRun> runs;
+  for (const std::string& set : config.study_joints)
+  {
+    const std::string folder = joint_study_folder(set);
+    damseis::results::print(comm, "== " + folder + " ==");
+    runs.push_back({set, analyse(comm, joint_study_case(config, set),
+                                 out_dir / folder, case_text)});
+  }
+  write_joint_study(comm, runs, candidate_labels(config), out_dir,
+                    config.seismic.plots);
+  return runs.back().summary;
+}
+
 int main(int argc, char** argv)
 {
   return demo_main(argc, argv, "arch_dam",
                    DAMSEIS_SOURCE_DIR "/demos/arch_dam/arch_dam.toml",
-                   arch_dam_schema, read_arch_dam_config, analyse);
+                   arch_dam_schema, read_arch_dam_config, study);
 }

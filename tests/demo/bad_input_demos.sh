@@ -31,6 +31,9 @@ expect arch_crest_point_outside 'arch_dam\.toml.*output\.crest_point.*outside th
 expect arch_point_in_the_water 'arch_dam\.toml.*output\.base_point.*outside the model' --set 'output.base_point=[0.0, -60.0, 50.0]'
 expect arch_reservoir_above_crest 'arch_dam\.toml.*reservoir\.level' --set reservoir.level=150
 expect arch_modulus_implausible 'arch_dam\.toml.*material\.E' --set material.E=1e300
+expect arch_study_unknown_joint 'arch_dam\.toml.*study\.joints.*"DGX".*not a candidate joint' --set 'study.joints=[none, DGX]'
+expect arch_study_repeated_joint 'arch_dam\.toml.*study\.joints.*"DGD".*repeated' --set 'study.joints=[DGD]'
+expect arch_study_with_active 'arch_dam\.toml.*study\.joints.*joints\.active' --set 'study.joints=[DGJ]' --set joints.active=DG
 
 exe=$point
 expect point_malformed 'malformed\.toml:[0-9]+' --case "$work/malformed.toml"

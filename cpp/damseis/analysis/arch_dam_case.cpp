@@ -45,6 +45,10 @@ input::Schema arch_dam_schema()
            "contact: labels of the joints with shear keys (no sliding, "
            "opening free), e.g. \"DG\"");
   add_joint_contact_keys(s, "cantilever");
+  s.string_array("study.joints", "[]", "-",
+                 "a study: one run per joint set, each into its subfolder, "
+                 "and the comparison tables (joint_study.md): \"none\" or "
+                 "the active labels, e.g. [\"none\", \"DGJ\", \"ADGJM\"]");
   add_seismic_keys(s, arch_dam_directions(), "[]", "[]");
   return s;
 }
@@ -101,6 +105,37 @@ void read_joint_contact(const input::Case& c, ArchDamConfig& a)
   a.history_points = read_joint_history_points(c);
   a.ncp = read_ncp_settings(c);
 }
+/// study.joints: every set "none" or distinct candidate labels.
+void read_joint_study(const input::Case& c, ArchDamConfig& a)
+{
+  a.study_joints = c.strings("study.joints");
+  if (a.study_joints.empty())
+    return;
+  if (!a.geometry.joints.active.empty())
+    c.fail("study.joints", "is given with joints.active",
+           "joints.active = \"\" (each set of study.joints says which "
+           "joints are active)");
+  const std::string labels = candidate_labels(a);
+  for (const std::string& set : a.study_joints)
+  {
+    if (set == "none")
+      continue;
+    if (set.empty())
+      c.fail("study.joints", "has an empty set",
+             "\"none\" for the dam without joints, or labels such as "
+             "\"DGJ\"");
+    for (std::size_t i = 0; i < set.size(); ++i)
+    {
+      if (labels.find(set[i]) == std::string::npos || set.find(set[i]) != i)
+        c.fail("study.joints",
+               "has the set \"" + set + "\": '" + set.substr(i, 1) + "' is " +
+                   (labels.find(set[i]) == std::string::npos
+                        ? "not a candidate joint"
+                        : "repeated"),
+               "distinct labels of the candidates (" + labels + ")");
+    }
+  }
+}
 } // namespace
 
 ArchDamConfig read_arch_dam_config(const input::Case& c)
@@ -139,6 +174,36 @@ ArchDamConfig read_arch_dam_config(const input::Case& c)
   a.seismic.faces = {{"upstream", {tags::upstream_face, tags::upstream_wetted}},
                      {"downstream", {tags::downstream_face}}};
   read_joint_contact(c, a);
+  read_joint_study(c, a);
   return a;
+}
+
+std::string candidate_labels(const ArchDamConfig& a)
+{
+  geometry::JointDefinition all = a.geometry.joints;
+  all.active.clear();
+  return joint_labels(all);
+}
+
+ArchDamConfig joint_study_case(const ArchDamConfig& a, const std::string& set)
+{
+  ArchDamConfig c = a;
+  c.study_joints.clear();
+  if (set == "none")
+  {
+    c.geometry.joints.count = 0;
+    c.geometry.joints.positions.clear();
+    c.geometry.joints.active.clear();
+    c.joints = JointModel::bonded;
+  }
+  else
+    c.geometry.joints.active = set;
+  return c;
+}
+
+std::string joint_study_folder(const std::string& set)
+{
+  return set == "none" ? "joints_0"
+                       : "joints_" + std::to_string(set.size()) + "_" + set;
 }
 } // namespace damseis::analysis

@@ -36,6 +36,9 @@ struct ArchDamConfig
   std::vector<std::array<double, 3>> history_points;
   contact::NcpSettings ncp;
   SeismicSettings seismic;
+  /// study.joints: the joint sets of a study, one run each ("none": no
+  /// joints; else active labels such as "DGJ"); empty: one run.
+  std::vector<std::string> study_joints;
 };
 
 /// Ground-motion directions in 3D: x across the canyon, y along the river
@@ -46,4 +49,12 @@ input::Schema arch_dam_schema();
 
 /// Throws input::InputError (one line naming the file and key).
 ArchDamConfig read_arch_dam_config(const input::Case& c);
+
+/// The configuration of one run of a joint study: the joints of `set`
+/// ("none": the dam without joints, bonded) active, the rest as `a`.
+ArchDamConfig joint_study_case(const ArchDamConfig& a, const std::string& set);
+/// Its subfolder: joints_0, joints_3_DGJ, ...
+std::string joint_study_folder(const std::string& set);
+/// The labels of all candidate joint positions ("ABC...").
+std::string candidate_labels(const ArchDamConfig& a);
 } // namespace damseis::analysis

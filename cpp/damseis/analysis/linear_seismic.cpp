@@ -1,5 +1,6 @@
 #include "linear_seismic.h"
 #include "engine_settings.h"
+#include "face_direction_recorder.h"
 #include "ground_motion_load.h"
 #include "initial_motion.h"
 #include "modal_stage.h"
@@ -97,6 +98,7 @@ private:
   std::unique_ptr<joint::JointRecorder> _joints;
   std::unique_ptr<FullDisplacement> _u;
   std::unique_ptr<StressRecorder> _stresses;
+  std::unique_ptr<FaceDirectionRecorder> _face_directions; ///< 3D faces
   std::unique_ptr<PointHistories> _points;
   std::unique_ptr<FaceDisplacementRecorder> _face_u;
   std::unique_ptr<FieldRecorder> _fields;
@@ -353,6 +355,14 @@ void LinearSeismicAnalysis::add_recorders(engine::TimeHistory& history)
   for (engine::Observer* o : std::initializer_list<engine::Observer*>{
            _u.get(), _stresses.get(), _points.get()})
     history.observe(*o);
+  // The arch and cantilever stresses on the faces (3D).
+  if (_fe.dim() == 3 && !_s.faces.empty())
+  {
+    _face_directions = std::make_unique<FaceDirectionRecorder>(
+        *_fe.S(), _s.face_tags ? *_s.face_tags : *model.facet_tags, _s,
+        _face_points, *_stresses);
+    history.observe(*_face_directions);
+  }
   _named->observe(history);
   if (_face_u)
     history.observe(*_face_u);
@@ -407,7 +417,13 @@ json LinearSeismicAnalysis::results()
                            dir / "envelopes.xdmf");
   if (_face_u)
     _face_u->write_csv(_comm, dir / "displacement_envelope.csv");
-  const json faces = write_faces(_comm, _s, envelope, _face_points, dim, dir);
+  json faces = write_faces(_comm, _s, envelope, _face_points, dim, dir);
+  if (_face_directions)
+  {
+    const json d = _face_directions->write(_comm, _s, dir);
+    for (const auto& [name, v] : d.items())
+      faces[name]["arch_cantilever_away_from_singular_points"] = v;
+  }
   json summary = seismic_summary(
       _comm, _fe, _s, *_modal, _added != nullptr, _points->crest().node(),
       envelope, faces, _stepper->solver_name(),
@@ -463,12 +479,16 @@ void write_summary_and_plots(MPI_Comm comm, const nlohmann::json& summary,
   s["warnings"] = results::warnings();
   std::ofstream(out_dir / "summary.json") << s.dump(2) << "\n";
   if (plots)
-  {
-    const std::string cmd = std::string(DAMSEIS_PYTHON) + " " +
-                            DAMSEIS_SOURCE_DIR + "/scripts/" + plot_script +
-                            " \"" + out_dir.string() + "\"";
-    if (std::system(cmd.c_str()) != 0)
-      std::fprintf(stderr, "warning: plotting failed: %s\n", cmd.c_str());
-  }
+    run_plot_script(plot_script, out_dir);
+}
+
+void run_plot_script(const std::string& script,
+                     const std::filesystem::path& dir)
+{
+  const std::string cmd = std::string(DAMSEIS_PYTHON) + " " +
+                          DAMSEIS_SOURCE_DIR + "/scripts/" + script + " \"" +
+                          dir.string() + "\"";
+  if (std::system(cmd.c_str()) != 0)
+    std::fprintf(stderr, "warning: plotting failed: %s\n", cmd.c_str());
 }
 } // namespace damseis::analysis

@@ -89,4 +89,9 @@ namespace damseis::analysis
 void write_summary_and_plots(MPI_Comm comm, const nlohmann::json& summary,
                              const std::filesystem::path& out_dir, bool plots,
                              const std::string& plot_script);
+
+/// Runs `scripts/<script> <dir>` of the source tree with the build's Python
+/// (a failure is a warning; call on one rank).
+void run_plot_script(const std::string& script,
+                     const std::filesystem::path& dir);
 } // namespace damseis::analysis

@@ -100,10 +100,6 @@ void StressEnvelope::restore(std::span<const double> max,
   std::copy(t_min.begin(), t_min.end(), _t_min.begin());
 }
 
-namespace
-{
-/// The extreme of `v` (largest if `sign` = 1, smallest if -1) over the
-/// candidate points of all ranks, with its location and time.
 Extreme global_extreme(MPI_Comm comm, const std::vector<double>& v,
                        const std::vector<double>& t,
                        const std::vector<std::array<double, 3>>& x,
@@ -131,7 +127,6 @@ Extreme global_extreme(MPI_Comm comm, const std::vector<double>& v,
   MPI_Bcast(data.data(), 5, MPI_DOUBLE, global.rank, comm);
   return {data[0], {data[1], data[2], data[3]}, data[4]};
 }
-} // namespace
 
 std::vector<std::int32_t> StressEnvelope::region_points() const
 {

@@ -18,6 +18,15 @@ struct Extreme
   double t = 0.0;
 };
 
+/// The extreme of `v` (largest if `sign` = 1, smallest if -1) over the
+/// `candidates` (indices into v, t, x) of all ranks, with its location and
+/// time. Collective.
+Extreme global_extreme(MPI_Comm comm, const std::vector<double>& v,
+                       const std::vector<double>& t,
+                       const std::vector<std::array<double, 3>>& x,
+                       const std::vector<std::int32_t>& candidates,
+                       double sign);
+
 /// Tracks, per owned stress point, the maximum of the largest principal
 /// stress (tension) and the minimum of the smallest (compression), with the
 /// times they occurred.
