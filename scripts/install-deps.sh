@@ -6,7 +6,7 @@ packages=(
   libdolfinx-dev python3-ffcx libslepc-real-dev
   libgmsh-dev libtomlplusplus-dev libcli11-dev libeigen3-dev
   nlohmann-json3-dev libgtest-dev googletest
-  libmumps-dev liblapack-dev # joint contact: MUMPS Schur complement, LAPACK
+  libmumps-dev liblapack-dev libblas-dev # joint contact: MUMPS Schur complement, LAPACK, BLAS
   libfftw3-dev # response spectra, filters and artificial records (motion/)
   openmpi-bin
   libopenblas0-serial # MUMPS/Cholesky are 7-9x slower with reference BLAS

@@ -59,15 +59,17 @@
 #  7. Impact (tests/data/case/bar_impact.toml): a 2 m bar (c = 1000 m/s,
 #     nu = 0) moving at v0 = 1 m/s against a massless stiff wall across a
 #     frictionless joint, HHT alpha = -0.1, dt = 20 us. The 1D wave
-#     solution (a bar hitting a rigid wall): contact for 2L/c = 4 ms, until
-#     all pairs are open (3%: the front spreads over an element, h/c = 2.5%
-#     of it; measured -1.5%; single pairs touch again briefly later, with
-#     a round-off-sensitive timing),
+#     solution (a bar hitting a rigid wall): contact for 2L/c = 4 ms, the
+#     time the bar's mean velocity, falling on a line under the constant
+#     interface force (fitted over 0.5-3.5 ms), reaches -v0 (3%: the front
+#     spreads over an element, h/c = 2.5% of it; measured -0.9%; the pairs
+#     themselves chatter, so the times they open are round-off-sensitive),
 #     then the bar flies back at -v0 (its mean velocity over 5-8 ms: 1%,
-#     momentum and kinetic energy of the rigid motion; measured 0.4%), and
+#     momentum and kinetic energy of the rigid motion; measured -0.4% to
+#     +0.7% as round-off moves the chattering pairs' last contacts), and
 #     the interface stress rho c v0 = 2.5 MPa while in contact, from the
 #     momentum theorem: rho L times the slope of the bar's mean velocity
-#     over 0.5-3.5 ms (2%; measured +0.5%). The wall has no mass, so no
+#     over 0.5-3.5 ms (2%; measured +0.7%). The wall has no mass, so no
 #     impact correction applies (a node without mass has no velocity of
 #     its own); the correction's balances are checked in
 #     tests/core/test_contact.cpp.
@@ -285,22 +287,24 @@ L, c, v0, rho = 2.0, 1000.0, 1.0, 2500.0
 g = rows("bar", "group_histories.csv")  # t, mean u (3), mean v (3), ...
 steps = rows("bar", "joint_steps.csv")  # t, open, sliding, widest, its
 pairs = max(r[1] for r in steps)
-# The bar leaves the wall when all its pairs are open; single pairs touch
-# again now and then afterwards (the dispersed wave of the tetrahedral
-# mesh) with a force too small to show in the mean velocity.
-t_contact = min(r[0] for r in steps if r[0] > 0.001 and r[1] == pairs)
-late = [r[0] for r in steps if r[0] > t_contact and r[1] < pairs]
-check("bar: contact duration 2L/c", abs(t_contact / (2 * L / c) - 1) < 0.03,
-      f"{1e3 * t_contact:.3f} ms, 2L/c = {2e3 * L / c:.3f} ms; "
-      f"{len(late)} later steps with a pair touching")
-after = [r[4] for r in g if 0.005 <= r[0] <= 0.008]
-v_after = sum(after) / len(after)
-check("bar: flies back at -v0", abs(v_after / -v0 - 1) < 0.01,
-      f"mean velocity {v_after:.5f} m/s")
+# While in contact the interface force is constant: the bar's mean velocity
+# falls on a line from v0, and the contact ends when the line reaches -v0.
+# (The pairs themselves chatter, opening and closing in turn, and single
+# pairs touch again briefly after the bar has left; the first step with
+# every pair open moved from 3.94 to 2.94 ms with round-off.)
 pts = [(r[0], r[4]) for r in g if 0.0005 <= r[0] <= 0.0035]
 n = len(pts)
 mt, mv = sum(p[0] for p in pts) / n, sum(p[1] for p in pts) / n
 slope = sum((p[0] - mt) * (p[1] - mv) for p in pts) / sum((p[0] - mt) ** 2 for p in pts)
+t_contact = (-v0 - (mv - slope * mt)) / slope
+last = max(r[0] for r in steps if r[1] < pairs)
+check("bar: contact duration 2L/c", abs(t_contact / (2 * L / c) - 1) < 0.03,
+      f"{1e3 * t_contact:.3f} ms, 2L/c = {2e3 * L / c:.3f} ms (the last pair "
+      f"touching at {1e3 * last:.2f} ms)")
+after = [r[4] for r in g if 0.005 <= r[0] <= 0.008]
+v_after = sum(after) / len(after)
+check("bar: flies back at -v0", abs(v_after / -v0 - 1) < 0.01,
+      f"mean velocity {v_after:.5f} m/s")
 sigma = -rho * L * slope
 check("bar: interface stress rho c v0", abs(sigma / (rho * c * v0) - 1) < 0.02,
       f"{sigma / 1e6:.4f} MPa, rho c v0 = {rho * c * v0 / 1e6:.4f} MPa")

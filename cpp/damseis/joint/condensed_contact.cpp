@@ -64,24 +64,39 @@ void cholesky(Eigen::MatrixXd& A)
   }
 }
 
-/// The inverse of the symmetric positive definite A (LAPACK potrf, potri).
-Eigen::MatrixXd spd_inverse(Eigen::MatrixXd A)
+/// The symmetric positive definite A replaced by its inverse, both
+/// triangles (LAPACK potrf with the singularity test of cholesky(), then
+/// potri).
+void invert_spd(Eigen::MatrixXd& A)
 {
   cholesky(A);
   const PetscBLASInt n = static_cast<PetscBLASInt>(A.rows());
   PetscBLASInt info = 0;
   LAPACKpotri_("L", &n, A.data(), &n, &info);
   A.triangularView<Eigen::StrictlyUpper>() = A.transpose();
+}
+
+Eigen::MatrixXd spd_inverse(Eigen::MatrixXd A)
+{
+  invert_spd(A);
   return A;
 }
 
-/// X <- A^-1 X with A's Cholesky factor L (LAPACK).
-void cholesky_solve(const Eigen::MatrixXd& L, double* X, Eigen::Index columns)
+extern "C" void dsymv_(const char* uplo, const int* n, const double* alpha,
+                       const double* a, const int* lda, const double* x,
+                       const int* incx, const double* beta, double* y,
+                       const int* incy);
+
+/// A x for the symmetric A (its lower triangle read: half the memory
+/// traffic of a general product; BLAS).
+Eigen::VectorXd symmetric_product(const Eigen::MatrixXd& A,
+                                  const Eigen::VectorXd& x)
 {
-  const PetscBLASInt n = static_cast<PetscBLASInt>(L.rows());
-  const PetscBLASInt m = static_cast<PetscBLASInt>(columns);
-  PetscBLASInt info = 0;
-  LAPACKpotrs_("L", &n, &m, L.data(), &n, X, &n, &info);
+  Eigen::VectorXd y(x.size());
+  const int n = static_cast<int>(A.rows()), one = 1;
+  const double alpha = 1.0, beta = 0.0;
+  dsymv_("L", &n, &alpha, A.data(), &n, x.data(), &one, &beta, y.data(), &one);
+  return y;
 }
 } // namespace
 
@@ -143,15 +158,17 @@ void CondensedContact::factorize(Mat K_eff)
   MPI_Comm_rank(_comm, &_rank);
   _schur = std::make_unique<linalg::SchurSolver>(K_eff, _unknowns);
   const auto t1 = std::chrono::steady_clock::now();
-  // S = L L^T; Y = S^-1 G; W = G^T Y, assembled pair by pair (rank 0; the
-  // outcome of the Cholesky factorisation to every rank).
+  // S^-1 (Cholesky, then the inverse: a step then reads half of it twice,
+  // less memory traffic than two triangular solves with the factor and a
+  // product with S^-1 G); W = G^T S^-1 G pair by pair (rank 0; the outcome
+  // to every rank).
   std::string failure;
   if (_rank == 0)
   {
     try
     {
-      _L = _schur->take_schur_complement();
-      cholesky(_L);
+      _S_inv = _schur->take_schur_complement();
+      invert_spd(_S_inv);
       set_up_flexibility();
     }
     catch (const NotPositiveDefinite& e)
@@ -172,19 +189,23 @@ void CondensedContact::factorize(Mat K_eff)
 void CondensedContact::set_up_flexibility()
 {
   const std::size_t n = _pairs.size();
-  _Y = Eigen::MatrixXd::Zero(_L.rows(), 3 * n);
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    _Y.block<3, 3>(_pos2[i], 3 * i) += _pairs.frame[i];
-    _Y.block<3, 3>(_pos1[i], 3 * i) -= _pairs.frame[i];
-  }
-  cholesky_solve(_L, _Y.data(), _Y.cols());
+  // W_ij = Q_i^T (S^-1[2i, 2j] - S^-1[2i, 1j] - S^-1[1i, 2j] + S^-1[1i, 1j])
+  // Q_j, [a b] the 3 x 3 block of the nodes of sides a (of pair i) and b
+  // (of pair j).
   Eigen::MatrixXd W(3 * n, 3 * n);
-  for (std::size_t i = 0; i < n; ++i)
+  for (std::size_t j = 0; j < n; ++j)
   {
-    W.middleRows<3>(3 * i) =
-        _pairs.frame[i].transpose() *
-        (_Y.middleRows<3>(_pos2[i]) - _Y.middleRows<3>(_pos1[i]));
+    for (std::size_t i = j; i < n; ++i)
+    {
+      const Eigen::Matrix3d B = _S_inv.block<3, 3>(_pos2[i], _pos2[j]) -
+                                _S_inv.block<3, 3>(_pos2[i], _pos1[j]) -
+                                _S_inv.block<3, 3>(_pos1[i], _pos2[j]) +
+                                _S_inv.block<3, 3>(_pos1[i], _pos1[j]);
+      const Eigen::Matrix3d Wij =
+          _pairs.frame[i].transpose() * B * _pairs.frame[j];
+      W.block<3, 3>(3 * i, 3 * j) = Wij;
+      W.block<3, 3>(3 * j, 3 * i) = Wij.transpose();
+    }
   }
   _problem.W = 0.5 * (W + W.transpose());
   // W^-1: Newton directions through z = W d, the dense system on the open
@@ -204,8 +225,7 @@ void CondensedContact::set_up_flexibility()
 contact::NcpReport CondensedContact::solve_pairs(const Eigen::VectorXd& y,
                                                  Eigen::VectorXd& x_s)
 {
-  Eigen::VectorXd x0 = y;
-  cholesky_solve(_L, x0.data(), 1);
+  const Eigen::VectorXd x0 = symmetric_product(_S_inv, y);
   _problem.w_free = relative(x0);
   _problem.wT_old = _wT_ref;
   _problem.g0 = _g0;
@@ -217,7 +237,9 @@ contact::NcpReport CondensedContact::solve_pairs(const Eigen::VectorXd& y,
                                ".bin");
   }
   contact::NcpReport rep = contact::solve_ncp(_problem, _p, _ncp);
-  x_s = x0 + _Y * rep.p;
+  // x0 + S^-1 G p: the pair displacements of x_s are then those of the
+  // NCP's w = w_free + W p (W from the same S^-1) to round-off.
+  x_s = x0 + symmetric_product(_S_inv, pair_forces(rep.p));
   return rep;
 }
 
@@ -296,7 +318,7 @@ void CondensedContact::solve_free(Vec rhs, Vec u)
   Eigen::VectorXd y;
   _schur->condense(rhs, y);
   if (_rank == 0)
-    cholesky_solve(_L, y.data(), 1);
+    y = symmetric_product(_S_inv, y);
   _schur->expand(y, u);
 }
 

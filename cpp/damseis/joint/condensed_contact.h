@@ -4,7 +4,8 @@
 //   w = w_free + W p,   W = G^T S^-1 G   (3 NC x 3 NC, once per factorisation)
 // and a step costs one ordinary solve (condense, the pair problem, expand)
 // plus dense work on rank 0: the NCP of contact/ncp.h (Alart-Curnier,
-// damped semismooth Newton) and two products with S's factors.
+// damped semismooth Newton) and two products with S^-1 (symmetric, half of it
+// read).
 //   G: the pair operator, w_i = Q_i^T (u_b - u_a), forces G p (+Q_i p_i on
 //   side 2, -Q_i p_i on side 1).
 #pragma once
@@ -48,7 +49,7 @@ struct ContactTotals
   double seconds_bulk = 0.0;    ///< condense + expand (the sparse solve)
   double seconds_contact = 0.0; ///< the dense pair problem on rank 0
   double seconds_impact = 0.0;
-  double seconds_setup = 0.0; ///< S's factors, W (per factorisation)
+  double seconds_setup = 0.0; ///< S^-1, W (per factorisation)
 };
 
 class CondensedContact : public dynamics::ConstrainedSolve
@@ -99,7 +100,7 @@ public:
   int position2(std::size_t i) const { return _pos2[i]; }
 
 private:
-  /// Y = S^-1 G, W and the laws' scalings from S's factor L (rank 0).
+  /// W = G^T S^-1 G and the laws' scalings (rank 0).
   void set_up_flexibility();
   /// w = G^T x_s (rank 0).
   Eigen::VectorXd relative(const Eigen::VectorXd& x_s) const;
@@ -114,8 +115,7 @@ private:
   std::vector<PetscInt> _unknowns;
   std::vector<int> _pos1, _pos2;
   std::unique_ptr<linalg::SchurSolver> _schur;
-  Eigen::MatrixXd _L;               ///< Cholesky factor of S (rank 0, lower)
-  Eigen::MatrixXd _Y;               ///< S^-1 G (rank 0)
+  Eigen::MatrixXd _S_inv;           ///< S^-1, both triangles (rank 0)
   contact::ContactProblem _problem; ///< W, laws (rank 0)
   Eigen::VectorXd _p, _w, _g0, _wT_ref;
   std::vector<contact::PairState> _states;
