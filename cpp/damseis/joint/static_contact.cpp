@@ -18,6 +18,7 @@ int relax(Mat M, double shift, Vec F, Vec u, const Solve& solve,
   using dolfinx::la::petsc::Vector;
   Vector rhs = linalg::column_vector(M), u_old = linalg::column_vector(M);
   double change_old = 0.0;
+  int slow = 0; // consecutive iterations that did not halve the change
   for (int k = 1; k <= static_max_iterations; ++k)
   {
     VecCopy(u, u_old.vec());
@@ -41,9 +42,11 @@ int relax(Mat M, double shift, Vec F, Vec u, const Solve& solve,
     if (change <= static_tolerance * size)
       return k;
     // Elastic errors shrink 1000x per iteration; a rigid motion no joint
-    // holds moves by the same amount each time. Round-off stops the first
-    // at static_round_off.
-    const bool stalled = k >= 3 && change > 0.5 * change_old;
+    // holds moves by the same amount each time (three iterations in a row:
+    // pairs that open or slip between iterations may slow one or two).
+    // Round-off stops the first at static_round_off.
+    slow = k > 1 && change > 0.5 * change_old ? slow + 1 : 0;
+    const bool stalled = slow >= 3;
     if (stalled && change <= static_round_off * size)
       return k;
     if (stalled)
