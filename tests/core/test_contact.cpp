@@ -26,6 +26,7 @@
 //    moving together with e = 0 (the inelastic collision of two masses:
 //    energy loss m_a m_b v_rel^2 / (2 (m_a + m_b))), and leaves separating
 //    nodes alone.
+#include "random_contact_problem.h"
 #include <cmath>
 #include <damseis/contact/alart_curnier.h>
 #include <damseis/contact/impact.h>
@@ -179,41 +180,7 @@ TEST(Contact, PairSolutionsMatchTheClosedForms)
   }
 }
 
-/// A random symmetric positive definite flexibility of n pairs, coupled,
-/// with diagonal about `c`.
-Eigen::MatrixXd random_flexibility(int n, double c, std::mt19937& gen)
-{
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  Eigen::MatrixXd R(3 * n, 3 * n);
-  for (int i = 0; i < 3 * n; ++i)
-    for (int j = 0; j < 3 * n; ++j)
-      R(i, j) = u(gen);
-  Eigen::MatrixXd W = 0.1 * c * R * R.transpose() / (3 * n);
-  W.diagonal().array() += c;
-  return W;
-}
-
-ContactProblem random_problem(int n, double mu, std::mt19937& gen)
-{
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  const double c = 1e-9;
-  ContactProblem pb;
-  pb.W = random_flexibility(n, c, gen);
-  pb.w_free.resize(3 * n);
-  pb.wT_old = Eigen::VectorXd::Zero(2 * n);
-  pb.g0 = Eigen::VectorXd::Zero(n);
-  for (int i = 0; i < 3 * n; ++i)
-    pb.w_free[i] = 1e-3 * u(gen);
-  for (int i = 0; i < n; ++i)
-  {
-    PairLaw law;
-    law.mu = mu;
-    law.r_n = 1.0 / pb.W(3 * i, 3 * i);
-    law.r_t = 1.0 / pb.W(3 * i + 1, 3 * i + 1);
-    pb.laws.push_back(law);
-  }
-  return pb;
-}
+using damseis::test::random_problem;
 
 TEST(ContactNcp, UncoupledPairsGiveTheSinglePairSolutions)
 {

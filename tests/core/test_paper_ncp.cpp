@@ -13,6 +13,7 @@
 //    same forces (1e-8 of the largest; the solution is unique for the small
 //    coupling used), and the frictionless forces of formulation A solve the
 //    LCP the Alart-Curnier test enumerates (through the same comparison).
+#include "random_contact_problem.h"
 #include <cmath>
 #include <damseis/contact/alart_curnier.h>
 #include <damseis/contact/ncp.h>
@@ -132,34 +133,6 @@ TEST(PaperNcp, TangentialResidualIsThePapersForm)
   EXPECT_GT(compared, 300);
 }
 
-ContactProblem random_problem(int n, double mu, std::mt19937& gen)
-{
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  const double c = 1e-9;
-  ContactProblem pb;
-  Eigen::MatrixXd R(3 * n, 3 * n);
-  for (int i = 0; i < 3 * n; ++i)
-    for (int j = 0; j < 3 * n; ++j)
-      R(i, j) = u(gen);
-  pb.W = 0.1 * c * R * R.transpose() / (3 * n);
-  pb.W.diagonal().array() += c;
-  pb.W_inv = pb.W.inverse();
-  pb.w_free.resize(3 * n);
-  for (int i = 0; i < 3 * n; ++i)
-    pb.w_free[i] = (i % 3 == 0 ? 1e-3 : 2e-4) * u(gen); // some pairs stick
-  pb.wT_old = Eigen::VectorXd::Zero(2 * n);
-  pb.g0 = Eigen::VectorXd::Zero(n);
-  for (int i = 0; i < n; ++i)
-  {
-    PairLaw law;
-    law.mu = mu;
-    law.r_n = 1.0 / pb.W(3 * i, 3 * i);
-    law.r_t = 1.0 / pb.W(3 * i + 1, 3 * i + 1);
-    pb.laws.push_back(law);
-  }
-  return pb;
-}
-
 TEST(PaperNcp, SolvesTheProblemsOfTheCartesianForm)
 {
   std::mt19937 gen(37);
@@ -170,7 +143,8 @@ TEST(PaperNcp, SolvesTheProblemsOfTheCartesianForm)
   {
     const int n = 6;
     const double mu = trial % 4 == 0 ? 0.0 : 0.6;
-    const ContactProblem pb = random_problem(n, mu, gen);
+    ContactProblem pb = damseis::test::random_problem(n, mu, gen, 2e-4);
+    pb.W_inv = pb.W.inverse(); // the reduced Newton direction
     const Eigen::VectorXd p0 = Eigen::VectorXd::Zero(3 * n);
     const NcpReport a = solve_ncp(pb, p0);
     const NcpReport b = solve_ncp(pb, p0, paper);
