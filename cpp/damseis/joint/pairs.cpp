@@ -3,6 +3,7 @@
 #include <cmath>
 #include <damseis/fem/facet_dofs.h>
 #include <damseis/fem/prolongation.h>
+#include <damseis/geometry/facet_normal.h>
 #include <damseis/geometry/tagged.h>
 #include <damseis/linalg/all_gather.h>
 #include <dolfinx/common/IndexMap.h>
@@ -27,13 +28,6 @@ std::int64_t global_block(const dolfinx::common::IndexMap& map, std::int32_t b)
   map.local_to_global(std::span<const std::int32_t>(&b, 1),
                       std::span<std::int64_t>(&g, 1));
   return g;
-}
-
-/// Coordinates of geometry node i.
-Vec3 point(const dolfinx::mesh::Mesh& mesh, std::int32_t i)
-{
-  const auto& x = mesh.geometry().x();
-  return {x[3 * i], x[3 * i + 1], x[3 * i + 2]};
 }
 
 /// A facet tagged `tag` whose (single) cell is owned here, and the facet's
@@ -83,18 +77,7 @@ node_normals(const dolfinx::fem::FunctionSpace& V,
   std::vector<double> out;
   for (const auto [f, c, local] : owned_facets(mesh, facet_tags, tag))
   {
-    const auto fx = dolfinx::mesh::entities_to_geometry(
-        mesh, tdim - 1, std::span<const std::int32_t>(&f, 1), false);
-    const auto cx = dolfinx::mesh::entities_to_geometry(
-        mesh, tdim, std::span<const std::int32_t>(&c, 1), false);
-    const Vec3 a = point(mesh, fx[0]), b = point(mesh, fx[1]),
-               d = point(mesh, fx[2]);
-    Vec3 n = 0.5 * (b - a).cross(d - a); // |n| = area
-    Vec3 centre = Vec3::Zero();
-    for (std::int32_t node : cx) // one cell: its vertices
-      centre += point(mesh, node) / static_cast<double>(cx.size());
-    if (n.dot((a + b + d) / 3.0 - centre) < 0.0)
-      n = -n;
+    const Vec3 n = geometry::outward_facet_normal(mesh, f, c);
     const auto cell_dofs = dofmap.cell_dofs(c);
     for (int k : layout.entity_closure_dofs(tdim - 1, local))
     {

@@ -7,10 +7,11 @@
 
 namespace damseis::results
 {
-std::vector<std::int32_t>
-face_points(const dolfinx::fem::FunctionSpace& S,
-            const dolfinx::mesh::MeshTags<std::int32_t>& facet_tags,
-            const std::vector<int>& tags, bool vertex_points)
+void for_each_face_point(
+    const dolfinx::fem::FunctionSpace& S,
+    const dolfinx::mesh::MeshTags<std::int32_t>& facet_tags,
+    const std::vector<int>& tags, bool vertex_points,
+    const std::function<void(std::int32_t, std::int32_t, std::int32_t)>& visit)
 {
   auto mesh = S.mesh();
   const int tdim = mesh->topology().dim();
@@ -22,9 +23,6 @@ face_points(const dolfinx::fem::FunctionSpace& S,
   auto f_to_v = topology.connectivity(tdim - 1, 0);
   auto c_to_v = topology.connectivity(tdim, 0);
   const auto& dofmap = *S.dofmap();
-  const std::int32_t num_owned = dofmap.index_map->size_local();
-
-  std::vector<std::int32_t> points;
   for (std::size_t i = 0; i < facet_tags.indices().size(); ++i)
   {
     if (std::find(tags.begin(), tags.end(), facet_tags.values()[i]) ==
@@ -36,20 +34,32 @@ face_points(const dolfinx::fem::FunctionSpace& S,
     {
       auto dofs = dofmap.cell_dofs(c);
       auto cv = c_to_v->links(c);
-      if (vertex_points && dofs.size() == cv.size())
+      // One point per cell vertex, in the cell's vertex order: those of the
+      // facet; otherwise (P1: a point per cell, or quadrature points) all
+      // the cell's points.
+      const bool at_vertices = vertex_points && dofs.size() == cv.size();
+      for (std::size_t k = 0; k < dofs.size(); ++k)
       {
-        // One point per cell vertex, in the cell's vertex order.
-        for (std::size_t k = 0; k < cv.size(); ++k)
-        {
-          if (std::find(fv.begin(), fv.end(), cv[k]) != fv.end())
-            points.push_back(dofs[k]);
-        }
+        if (!at_vertices || std::find(fv.begin(), fv.end(), cv[k]) != fv.end())
+          visit(f, c, dofs[k]);
       }
-      else
-        points.insert(points.end(), dofs.begin(), dofs.end());
     }
   }
-  std::erase_if(points, [num_owned](std::int32_t p) { return p >= num_owned; });
+}
+
+std::vector<std::int32_t>
+face_points(const dolfinx::fem::FunctionSpace& S,
+            const dolfinx::mesh::MeshTags<std::int32_t>& facet_tags,
+            const std::vector<int>& tags, bool vertex_points)
+{
+  const std::int32_t num_owned = S.dofmap()->index_map->size_local();
+  std::vector<std::int32_t> points;
+  for_each_face_point(S, facet_tags, tags, vertex_points,
+                      [&](std::int32_t, std::int32_t, std::int32_t p)
+                      {
+                        if (p < num_owned)
+                          points.push_back(p);
+                      });
   std::sort(points.begin(), points.end());
   points.erase(std::unique(points.begin(), points.end()), points.end());
   return points;

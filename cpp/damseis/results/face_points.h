@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <dolfinx/fem/FunctionSpace.h>
 #include <dolfinx/mesh/MeshTags.h>
+#include <functional>
 #include <vector>
 
 namespace damseis::results
@@ -15,6 +16,16 @@ namespace damseis::results
 /// the centres of the adjacent cells. Sorted, unique. With `vertex_points`
 /// false (quadrature points inside the cells): all points of the adjacent
 /// cells.
+/// Calls `visit(facet, cell, point)` for every facet tagged with any of
+/// `tags`, every cell of the facet and every local point of S that
+/// face_points() counts for that facet and cell (points may repeat; ghost
+/// points included).
+void for_each_face_point(
+    const dolfinx::fem::FunctionSpace& S,
+    const dolfinx::mesh::MeshTags<std::int32_t>& facet_tags,
+    const std::vector<int>& tags, bool vertex_points,
+    const std::function<void(std::int32_t, std::int32_t, std::int32_t)>& visit);
+
 std::vector<std::int32_t>
 face_points(const dolfinx::fem::FunctionSpace& S,
             const dolfinx::mesh::MeshTags<std::int32_t>& facet_tags,
