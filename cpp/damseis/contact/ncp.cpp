@@ -309,13 +309,20 @@ NcpReport solve_ncp(const ContactProblem& c, const Eigen::VectorXd& p0,
     std::vector<PairState> st;
     return residual_at(c, p, w, st, nullptr).squaredNorm();
   };
-  const bool warm_first = merit(p0, w_warm) <= merit(stuck, w_stuck);
-  NcpReport first =
-      warm_first ? newton(c, p0, w_warm, s) : newton(c, stuck, w_stuck, s);
+  return from_two_starts(merit(p0, w_warm) <= merit(stuck, w_stuck),
+                         [&](bool warm) {
+                           return warm ? newton(c, p0, w_warm, s)
+                                       : newton(c, stuck, w_stuck, s);
+                         });
+}
+
+NcpReport from_two_starts(bool warm_first,
+                          const std::function<NcpReport(bool warm)>& newton)
+{
+  NcpReport first = newton(warm_first);
   if (first.converged)
     return first;
-  NcpReport second =
-      warm_first ? newton(c, stuck, w_stuck, s) : newton(c, p0, w_warm, s);
+  NcpReport second = newton(!warm_first);
   second.iterations += first.iterations;
   second.line_search_steps += first.line_search_steps;
   second.gradient_steps += first.gradient_steps;

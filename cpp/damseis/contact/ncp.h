@@ -6,6 +6,7 @@
 #pragma once
 
 #include "alart_curnier.h"
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -75,6 +76,13 @@ double force_scale(const ContactProblem& c, const Eigen::VectorXd& p0);
 /// The forces with every pair closed and stuck (F = 0 on the stick branch:
 /// the bonded joints' forces).
 Eigen::VectorXd stuck_forces(const ContactProblem& c);
+
+/// The two-start strategy of both formulations: `newton(true)` from the
+/// warm start or `newton(false)` from the stuck forces, `warm_first`
+/// deciding which first, the other only if the first fails; the report of
+/// the converged run (or of the smaller residual) with the work of both.
+NcpReport from_two_starts(bool warm_first,
+                          const std::function<NcpReport(bool warm)>& newton);
 
 /// Solves the contact problem from p0 (warm start: the last step's forces)
 /// or from stuck_forces(), whichever has the smaller residual, then from

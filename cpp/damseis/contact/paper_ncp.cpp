@@ -266,14 +266,7 @@ NcpReport solve_ncp_paper(const ContactProblem& c, const Eigen::VectorXd& p0,
     }
     return evaluate(c, q, theta).h.squaredNorm();
   };
-  const bool warm_first = merit(p0) <= merit(stuck);
-  NcpReport first = newton(c, warm_first ? p0 : stuck, s);
-  if (first.converged)
-    return first;
-  NcpReport second = newton(c, warm_first ? stuck : p0, s);
-  second.iterations += first.iterations;
-  second.line_search_steps += first.line_search_steps;
-  second.gradient_steps += first.gradient_steps;
-  return second.converged || second.residual < first.residual ? second : first;
+  return from_two_starts(merit(p0) <= merit(stuck), [&](bool warm)
+                         { return newton(c, warm ? p0 : stuck, s); });
 }
 } // namespace damseis::contact
