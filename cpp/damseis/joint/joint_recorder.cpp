@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <tuple>
 
 namespace damseis::joint
 {
@@ -36,6 +37,57 @@ std::string cm(double metres)
   std::snprintf(s, sizeof s, "%.4f", 100.0 * metres);
   return s;
 }
+
+/// The pairs with histories and their names: the pair nearest to each of
+/// `points` ("<joint>_p<k>"), or with no points the top pair of each joint
+/// ("<joint>_top").
+std::pair<std::vector<int>, std::vector<std::string>>
+history_pairs(const PairSet& pairs,
+              const std::vector<std::array<double, 3>>& points)
+{
+  std::vector<int> index;
+  std::vector<std::string> name;
+  // The pair of `among` (a predicate) that minimises `cost`, or -1.
+  auto best_pair = [&](auto among, auto cost)
+  {
+    int best = -1;
+    for (std::size_t i = 0; i < pairs.size(); ++i)
+    {
+      if (among(i) && (best < 0 || cost(i) < cost(best)))
+        best = static_cast<int>(i);
+    }
+    return best;
+  };
+  if (points.empty())
+  {
+    for (std::size_t j = 0; j < pairs.joints.size(); ++j)
+    {
+      const int top = best_pair(
+          [&](std::size_t i) { return pairs.joint[i] == static_cast<int>(j); },
+          [&](std::size_t i) { return -pairs.x[i][2]; });
+      if (top >= 0)
+      {
+        index.push_back(top);
+        name.push_back(pairs.joints[j].label + "_top");
+      }
+    }
+  }
+  for (std::size_t k = 0; k < points.size(); ++k)
+  {
+    const auto& q = points[k];
+    const int nearest = best_pair([](std::size_t) { return true; },
+                                  [&](std::size_t i)
+                                  {
+                                    return std::hypot(pairs.x[i][0] - q[0],
+                                                      pairs.x[i][1] - q[1],
+                                                      pairs.x[i][2] - q[2]);
+                                  });
+    index.push_back(nearest);
+    name.push_back(pairs.joints[pairs.joint[nearest]].label + "_p" +
+                   std::to_string(k + 1));
+  }
+  return {index, name};
+}
 } // namespace
 
 JointRecorder::JointRecorder(const ContactStepper& stepper,
@@ -45,44 +97,7 @@ JointRecorder::JointRecorder(const ContactStepper& stepper,
 {
   const PairSet& pairs = stepper.contact().pairs();
   const std::size_t n = pairs.size();
-  if (points.empty())
-  {
-    // The top pair of each joint.
-    for (std::size_t j = 0; j < pairs.joints.size(); ++j)
-    {
-      int top = -1;
-      for (std::size_t i = 0; i < n; ++i)
-      {
-        if (pairs.joint[i] == static_cast<int>(j) &&
-            (top < 0 || pairs.x[i][2] > pairs.x[top][2]))
-          top = static_cast<int>(i);
-      }
-      if (top >= 0)
-      {
-        _probe.push_back(top);
-        _probe_name.push_back(pairs.joints[j].label + "_top");
-      }
-    }
-  }
-  for (std::size_t k = 0; k < points.size(); ++k)
-  {
-    int best = -1;
-    double d_best = 0.0;
-    for (std::size_t i = 0; i < n; ++i)
-    {
-      const double d =
-          std::hypot(pairs.x[i][0] - points[k][0], pairs.x[i][1] - points[k][1],
-                     pairs.x[i][2] - points[k][2]);
-      if (best < 0 || d < d_best)
-      {
-        best = static_cast<int>(i);
-        d_best = d;
-      }
-    }
-    _probe.push_back(best);
-    _probe_name.push_back(pairs.joints[pairs.joint[best]].label + "_p" +
-                          std::to_string(k + 1));
-  }
+  std::tie(_probe, _probe_name) = history_pairs(pairs, points);
   _open.assign(n, 0.0);
   _t_open.assign(n, 0.0);
   _slide.assign(n, 0.0);
