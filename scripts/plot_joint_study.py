@@ -7,7 +7,6 @@ joint_pairs.csv.
 
 Usage: plot_joint_study.py STUDY_DIR   (writes joint_study.png)
 """
-import csv
 import sys
 from pathlib import Path
 
@@ -18,7 +17,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from plot_joints import joint_positions  # noqa: E402
+from plot_joints import column, load_joint_table  # noqa: E402
 
 
 def main() -> None:
@@ -32,11 +31,10 @@ def main() -> None:
         return
     fig, axes = plt.subplots(2, 1, figsize=(10, 7), sharex=True)
     for k, case in enumerate(cases):
-        with open(case / "joint_table.csv") as f:
-            rows = list(csv.DictReader(f))
-        labels = [r["joint"] for r in rows]
-        s = joint_positions(case, labels)
-        order = np.argsort(s)
+        table = load_joint_table(case)
+        if table is None:
+            continue
+        rows, s, order = table
         parts = case.name.split("_")  # joints_<count>[_<labels>]
         name = f"{parts[1]} joints" + (f" ({parts[2]})" if len(parts) > 2
                                        else "")
@@ -46,8 +44,7 @@ def main() -> None:
                 key = f"{what}_{face}_cm"
                 if key not in rows[0]:
                     continue
-                v = np.array([float(r[key]) if r[key] not in ("", "-")
-                              else np.nan for r in rows])
+                v = column(rows, key)
                 ax.plot(s[order], v[order], style, color=colour, marker="o",
                         ms=3, lw=1.1,
                         label=name if face == "upstream" else None)

@@ -44,22 +44,36 @@ def joint_positions(out: Path, labels: list) -> np.ndarray:
     return s if s[0] <= s[-1] else -s
 
 
-def plot_joints(out: Path) -> None:
+def load_joint_table(out: Path):
+    """The rows of joint_table.csv, the joints' positions along the axis and
+    their order along it (None if the table is empty)."""
     with open(out / "joint_table.csv") as f:
         rows = list(csv.DictReader(f))
     if not rows:
+        return None
+    s = joint_positions(out, [r["joint"] for r in rows])
+    return rows, s, np.argsort(s)
+
+
+def column(rows, key: str) -> np.ndarray:
+    """A column of joint_table.csv as numbers (NaN where a joint has none)."""
+    return np.array([float(r[key]) if r[key] not in ("", "-") else np.nan
+                     for r in rows])
+
+
+def plot_joints(out: Path) -> None:
+    table = load_joint_table(out)
+    if table is None:
         return
+    rows, s, order = table
     labels = [r["joint"] for r in rows]
-    s = joint_positions(out, labels)
-    order = np.argsort(s)
     fig, axes = plt.subplots(2, 1, figsize=(9, 6.5), sharex=True)
     for ax, what in zip(axes, ("opening", "sliding")):
         faces = [c for c in rows[0] if c.startswith(what + "_")
                  and c != what + "_cm"]
         columns = faces if faces else [what + "_cm"]
         for c in columns:
-            v = np.array([float(r[c]) if r[c] not in ("", "-") else np.nan
-                          for r in rows])
+            v = column(rows, c)
             name = c[len(what) + 1:-3] if faces else "all pairs"
             ax.plot(s[order], v[order], marker="o", lw=1.2,
                     label={"U": "upstream face", "D": "downstream face"}.get(
