@@ -61,7 +61,7 @@ FaceDirectionRecorder::write(MPI_Comm comm, const SeismicSettings& s,
       const auto& xi = env.point(pts[i]);
       x.push_back(xi);
       const double dist = results::distance_to(xi, s.singular_points);
-      if (dist > s.singular_radius)
+      if (dist >= s.singular_radius) // as results::points_away_from
         away.push_back(static_cast<std::int32_t>(i));
       rows.insert(rows.end(), {xi[0], xi[1], xi[2]});
       for (int d = 0; d < 2; ++d)
