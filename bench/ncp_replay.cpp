@@ -28,8 +28,9 @@ int main(int argc, char** argv)
   }
   std::printf(
       "| problem | pairs | converged | iterations | line-search steps | "
-      "gradient steps | residual | Alart-Curnier residual | seconds "
-      "|\n|---|---|---|---|---|---|---|---|---|\n");
+      "gradient steps | reduced rows | open | slip | residual | "
+      "Alart-Curnier residual | seconds "
+      "|\n|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const auto& f : files)
   {
     Eigen::VectorXd p0;
@@ -54,9 +55,17 @@ int main(int argc, char** argv)
     std::vector<damseis::contact::PairState> st;
     const double ac = damseis::contact::contact_residual(c, r.p, w, st).norm() /
                       damseis::contact::force_scale(c, p0);
-    std::printf("| %s | %zu | %s | %d | %d | %d | %.2e | %.2e | %.3f |\n",
-                f.c_str(), c.laws.size(), r.converged ? "yes" : "no",
-                r.iterations, r.line_search_steps, r.gradient_steps, r.residual,
-                ac, sec);
+    int open = 0, slip = 0;
+    for (auto state : r.states)
+    {
+      open += state == damseis::contact::PairState::open;
+      slip += state == damseis::contact::PairState::slip;
+    }
+    std::printf(
+        "| %s | %zu | %s | %d | %d | %d | %d | %d | %d | %.2e | %.2e | %.3f "
+        "|\n",
+        f.c_str(), c.laws.size(), r.converged ? "yes" : "no", r.iterations,
+        r.line_search_steps, r.gradient_steps, r.reduced_rows, open, slip,
+        r.residual, ac, sec);
   }
 }

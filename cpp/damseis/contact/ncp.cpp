@@ -10,6 +10,27 @@ namespace damseis::contact
 {
 namespace
 {
+/// A x for the symmetric A (3n x 3n, dense): from the columns of A at the
+/// nonzeros of x when they are few (a Newton direction late in the
+/// iteration: only the pairs still changing), else from the lower
+/// triangle (half of A read). Memory traffic is the cost here.
+Eigen::VectorXd product_with(const Eigen::MatrixXd& A, const Eigen::VectorXd& x)
+{
+  std::vector<Eigen::Index> nonzero;
+  for (Eigen::Index k = 0; k < x.size(); ++k)
+    if (x[k] != 0.0)
+      nonzero.push_back(k);
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(x.size());
+  if (4 * nonzero.size() < static_cast<std::size_t>(x.size()))
+  {
+    for (Eigen::Index k : nonzero)
+      y += x[k] * A.col(k);
+  }
+  else
+    y.noalias() = A.selfadjointView<Eigen::Lower>() * x;
+  return y;
+}
+
 /// The residual at forces p with relative displacements w (3n), the pair
 /// blocks of its generalised Jacobian and the states.
 Eigen::VectorXd residual_at(const ContactProblem& c, const Eigen::VectorXd& p,
@@ -53,8 +74,10 @@ Eigen::MatrixXd dense_jacobian(const ContactProblem& c,
 /// The Newton direction d of J d = -F with J = B + A W, found through
 /// z = W d: (B W^-1 + A) z = -F. A row whose B row is zero reads
 /// A_jj z_j = -F_j (sticking pairs, the normal row of closed pairs, keyed
-/// pairs); the others couple through W^-1 and form a dense system of their
-/// own size. Returns false if that system is singular.
+/// pairs); the others (open pairs, sliding pairs' tangential rows) couple
+/// through W^-1 and form a dense system of their own size. W^-1 is read by
+/// columns only (it is symmetric): the columns of the coupled rows' pairs,
+/// once. Returns false if that system is singular.
 bool reduced_direction(const ContactProblem& c,
                        const std::vector<PairResidual>& blocks,
                        const Eigen::VectorXd& F, Eigen::VectorXd& d,
@@ -82,28 +105,49 @@ bool reduced_direction(const ContactProblem& c,
   if (!coupled.empty())
   {
     const Eigen::Index m = static_cast<Eigen::Index>(coupled.size());
-    Eigen::MatrixXd S(m, m);
+    // The pairs of the coupled rows; for each of their components q (3 per
+    // pair), column q of W^-1 gives (B W^-1)'s rows: its entries at the
+    // coupled rows (Wc.col) and its product with the known z (y).
+    std::vector<Eigen::Index> pairs;
+    for (Eigen::Index j : coupled)
+      if (pairs.empty() || pairs.back() != j / 3)
+        pairs.push_back(j / 3);
+    const Eigen::Index np = static_cast<Eigen::Index>(pairs.size());
+    Eigen::MatrixXd Wc(m, 3 * np);
+    Eigen::VectorXd y(3 * np);
+    for (Eigen::Index a = 0; a < np; ++a)
+    {
+      for (Eigen::Index k = 0; k < 3; ++k)
+      {
+        const auto col = c.W_inv.col(3 * pairs[a] + k);
+        for (Eigen::Index r = 0; r < m; ++r)
+          Wc(r, 3 * a + k) = col[coupled[r]];
+        y[3 * a + k] = col.dot(z); // z is zero at the coupled rows
+      }
+    }
+    // S^T column by column (row r of S = sum_k B(l, k) W^-1 row (3i + k),
+    // plus A(l, k) at the pair's own coupled components).
+    Eigen::MatrixXd ST(m, m);
     Eigen::VectorXd rhs(m);
-    Eigen::RowVectorXd BW(n3);
+    Eigen::Index a = 0;
     for (Eigen::Index r = 0; r < m; ++r)
     {
       const Eigen::Index j = coupled[r], i = j / 3, l = j % 3;
+      while (pairs[a] != i)
+        ++a;
       const PairResidual& b = blocks[i];
-      // Row l of B_i times the rows of W^-1 of pair i.
-      BW = b.B(l, 0) * c.W_inv.row(3 * i) + b.B(l, 1) * c.W_inv.row(3 * i + 1) +
-           b.B(l, 2) * c.W_inv.row(3 * i + 2);
-      for (int k = 0; k < 3; ++k)
-        BW[3 * i + k] += b.A(l, k);
-      double known = 0.0;
-      for (Eigen::Index k = 0; k < n3; ++k)
+      ST.col(r) = Wc.middleCols<3>(3 * a) * b.B.row(l).transpose();
+      double known = b.B.row(l).dot(y.segment<3>(3 * a));
+      for (Eigen::Index k = 0; k < 3; ++k)
       {
-        if (position[k] >= 0)
-          S(r, position[k]) = BW[k];
+        if (position[3 * i + k] >= 0)
+          ST(position[3 * i + k], r) += b.A(l, k);
         else
-          known += BW[k] * z[k];
+          known += b.A(l, k) * z[3 * i + k];
       }
       rhs[r] = -F[j] - known;
     }
+    const Eigen::MatrixXd S = ST.transpose();
     Eigen::PartialPivLU<Eigen::MatrixXd> lu(S);
     const Eigen::VectorXd zc = lu.solve(rhs);
     if (!zc.allFinite() || (S * zc - rhs).norm() > 1e-6 * rhs.norm() + 1e-300)
@@ -111,7 +155,7 @@ bool reduced_direction(const ContactProblem& c,
     for (Eigen::Index r = 0; r < m; ++r)
       z[coupled[r]] = zc[r];
   }
-  d = c.W_inv * z;
+  d = product_with(c.W_inv, z);
   return true;
 }
 } // namespace
@@ -181,9 +225,13 @@ Eigen::VectorXd contact_residual(const ContactProblem& c,
 
 namespace
 {
-/// The damped semismooth Newton iteration from p0, w0 = w_free + W p0.
+/// The damped semismooth Newton iteration from p0, w0 = w_free + W p0
+/// (`w0_exact`: computed so; else equal to it to round-off). w moves with p
+/// along dw = W d (no product with W in an iteration of the reduced direction,
+/// where dw = z); before convergence is accepted, w is computed afresh from p,
+/// so no drift of the updates enters the result.
 NcpReport newton(const ContactProblem& c, const Eigen::VectorXd& p0,
-                 const Eigen::VectorXd& w0, const NcpSettings& s)
+                 const Eigen::VectorXd& w0, bool w0_exact, const NcpSettings& s)
 {
   const Eigen::Index n = static_cast<Eigen::Index>(c.laws.size());
   const bool reduced = c.W_inv.rows() == 3 * n && n > 0;
@@ -192,11 +240,20 @@ NcpReport newton(const ContactProblem& c, const Eigen::VectorXd& p0,
   const double scale = force_scale(c, p0);
   std::vector<PairResidual> blocks;
   rep.w = w0;
+  bool w_afresh = w0_exact; // w = w_free + W p computed from p
   Eigen::VectorXd F = residual_at(c, rep.p, rep.w, rep.states, &blocks);
   double psi = 0.5 * F.squaredNorm();
   for (rep.iterations = 0; rep.iterations < s.max_iterations; ++rep.iterations)
   {
     rep.residual = F.norm() / scale;
+    if (rep.residual <= s.tol && !w_afresh)
+    {
+      rep.w = c.w_free + product_with(c.W, rep.p);
+      w_afresh = true;
+      F = residual_at(c, rep.p, rep.w, rep.states, &blocks);
+      psi = 0.5 * F.squaredNorm();
+      rep.residual = F.norm() / scale;
+    }
     if (rep.residual <= s.tol)
     {
       rep.converged = true;
@@ -229,20 +286,29 @@ NcpReport newton(const ContactProblem& c, const Eigen::VectorXd& p0,
     {
       for (double alpha = 1.0; alpha > 1e-6; alpha *= 0.5)
       {
-        std::vector<PairState> st;
         const Eigen::VectorXd trial = rep.p + alpha * dir;
         const Eigen::VectorXd w = rep.w + alpha * dir_w;
-        const Eigen::VectorXd Ft = residual_at(c, trial, w, st, nullptr);
-        if (0.5 * Ft.squaredNorm() <= (1.0 - 2e-4 * alpha) * psi)
+        std::vector<PairResidual> trial_blocks;
+        std::vector<PairState> st;
+        const Eigen::VectorXd Ft = residual_at(c, trial, w, st, &trial_blocks);
+        const double psi_t = 0.5 * Ft.squaredNorm();
+        if (psi_t <= (1.0 - 2e-4 * alpha) * psi)
         {
           rep.p = trial;
+          rep.w = w;
+          rep.states = std::move(st);
+          blocks = std::move(trial_blocks);
+          F = Ft;
+          psi = psi_t;
           return true;
         }
         ++rep.line_search_steps;
       }
       return false;
     };
-    if (!search(d, dw))
+    if (search(d, dw))
+      w_afresh = false;
+    else
     {
       ++rep.gradient_steps;
       if (J.size() == 0)
@@ -250,11 +316,8 @@ NcpReport newton(const ContactProblem& c, const Eigen::VectorXd& p0,
       const Eigen::VectorXd g = -J.transpose() * F;
       if (!search(g, c.W * g))
         break;
+      w_afresh = false;
     }
-    // w afresh from p (no drift from the line search's updates).
-    rep.w = c.w_free + c.W * rep.p;
-    F = residual_at(c, rep.p, rep.w, rep.states, &blocks);
-    psi = 0.5 * F.squaredNorm();
   }
   rep.residual = F.norm() / scale;
   return rep;
@@ -263,29 +326,49 @@ NcpReport newton(const ContactProblem& c, const Eigen::VectorXd& p0,
 
 double force_scale(const ContactProblem& c, const Eigen::VectorXd& p0)
 {
+  // A floor at 1e-3 of the forces of the total relative displacements:
+  // when a load changes nothing (the free gaps and slips are round-off,
+  // 1e-16 of those displacements), |F| cannot fall below that round-off,
+  // which must stay below tol times the scale.
+  constexpr double floor = 1e-3;
   double scale = 1e-300;
   for (std::size_t i = 0; i < c.laws.size(); ++i)
   {
     const Eigen::Index k = static_cast<Eigen::Index>(i);
-    scale =
-        std::max({scale, c.laws[i].r_n * std::abs(c.g0[k] + c.w_free[3 * k]),
-                  c.laws[i].r_t * (c.w_free.segment<2>(3 * k + 1) -
-                                   c.wT_old.segment<2>(2 * k))
-                                      .norm()});
+    const PairLaw& l = c.laws[i];
+    const Eigen::Vector2d wT = c.w_free.segment<2>(3 * k + 1);
+    const Eigen::Vector2d wT_old = c.wT_old.segment<2>(2 * k);
+    scale = std::max(
+        {scale, l.tension, l.cohesion,
+         l.r_n * std::abs(c.g0[k] + c.w_free[3 * k]),
+         l.r_t * (wT - wT_old).norm(),
+         floor * l.r_n * std::max(std::abs(c.g0[k]), std::abs(c.w_free[3 * k])),
+         floor * l.r_t * std::max(wT.norm(), wT_old.norm())});
   }
   return std::max(scale, p0.lpNorm<Eigen::Infinity>());
 }
 
-Eigen::VectorXd stuck_forces(const ContactProblem& c)
+namespace
 {
-  // F = 0 with every pair closed and stuck: w_n = -g0, w_T = w_T,old, i.e.
-  // W p = w_target - w_free.
+/// The relative displacements with every pair closed and stuck: w_n =
+/// -g0, w_T = w_T,old.
+Eigen::VectorXd stuck_target(const ContactProblem& c)
+{
   const Eigen::Index n = static_cast<Eigen::Index>(c.laws.size());
   Eigen::VectorXd target(3 * n);
   for (Eigen::Index i = 0; i < n; ++i)
     target.segment<3>(3 * i) << -c.g0[i], c.wT_old.segment<2>(2 * i);
+  return target;
+}
+} // namespace
+
+Eigen::VectorXd stuck_forces(const ContactProblem& c)
+{
+  // F = 0 with every pair closed and stuck: W p = w_target - w_free.
+  const Eigen::Index n = static_cast<Eigen::Index>(c.laws.size());
+  const Eigen::VectorXd target = stuck_target(c);
   return c.W_inv.rows() == 3 * n
-             ? Eigen::VectorXd(c.W_inv * (target - c.w_free))
+             ? product_with(c.W_inv, target - c.w_free)
              : Eigen::VectorXd(c.W.ldlt().solve(target - c.w_free));
 }
 
@@ -302,17 +385,18 @@ NcpReport solve_ncp(const ContactProblem& c, const Eigen::VectorXd& p0,
   // (Each start's w = w_free + W p is computed once, for the choice and for
   // Newton.)
   const Eigen::VectorXd stuck = stuck_forces(c);
-  const Eigen::VectorXd w_warm = c.w_free + c.W * p0;
-  const Eigen::VectorXd w_stuck = c.w_free + c.W * stuck;
+  const Eigen::VectorXd w_warm = c.w_free + product_with(c.W, p0);
+  const Eigen::VectorXd w_stuck = stuck_target(c); // = w_free + W stuck
   auto merit = [&](const Eigen::VectorXd& p, const Eigen::VectorXd& w)
   {
     std::vector<PairState> st;
     return residual_at(c, p, w, st, nullptr).squaredNorm();
   };
   return from_two_starts(merit(p0, w_warm) <= merit(stuck, w_stuck),
-                         [&](bool warm) {
-                           return warm ? newton(c, p0, w_warm, s)
-                                       : newton(c, stuck, w_stuck, s);
+                         [&](bool warm)
+                         {
+                           return warm ? newton(c, p0, w_warm, true, s)
+                                       : newton(c, stuck, w_stuck, false, s);
                          });
 }
 

@@ -70,7 +70,8 @@ ContactProblem read_problem(const std::string& file, Eigen::VectorXd& p0);
 
 /// The force scale of the convergence test: the largest force that closes
 /// a free gap or stops a free slip (r_n |g0 + w_free,n|, r_t |ds_free|),
-/// or the largest of p0.
+/// a bond's strength, or the largest of p0; at least 1e-3 of r_n and r_t
+/// times the total relative displacements (a round-off floor).
 double force_scale(const ContactProblem& c, const Eigen::VectorXd& p0);
 
 /// The forces with every pair closed and stuck (F = 0 on the stick branch:
