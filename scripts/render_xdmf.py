@@ -9,6 +9,8 @@ Writes, in OUT_DIR:
   paraview_envelopes.png  envelopes.xdmf coloured by max_principal_MPa
   paraview_modes.png      modes.xdmf: mode 1 (warped) coloured by its
                           magnitude
+  paraview_joints.png     contact joints: joint_envelope.xdmf, the joint
+                          faces coloured by their largest opening [cm]
 Each panel is the same recipe a user follows by hand in ParaView: open the
 file (Xdmf3 reader), Warp By Vector on displacement_m (or a mode), colour
 by a field.
@@ -108,6 +110,12 @@ def main():
             picture(r, names[0], "POINTS", names[0],
                     os.path.join(out, "paraview_modes.png"), names[0],
                     warp_scale(r, names[0]))
+    joints = os.path.join(out, "joint_envelope.xdmf")
+    if os.path.exists(joints):
+        r = Xdmf3ReaderS(FileName=[joints])
+        picture(r, "max_opening_cm", "POINTS",
+                "largest joint opening [cm]",
+                os.path.join(out, "paraview_joints.png"))
     return 0
 
 

@@ -21,6 +21,9 @@
 //    (1e-9); with friction and a coupled W every pair meets the Coulomb
 //    conditions themselves (no penetration, no tension, complementarity,
 //    |P_T| <= mu P_n, no slip below it, slip opposite to P_T at it);
+//  - a bonded pair (tension T, cohesion C): the same Jacobian check, and
+//    the closed forms of a bond holding below its strength and failing
+//    above (opening at P_n = -T; sliding at |P_T| = C + mu P_n);
 //  - the impact correction (contact/impact) keeps the normal momentum
 //    (round-off), keeps the kinetic energy with e = 1 and leaves the nodes
 //    moving together with e = 0 (the inelastic collision of two masses:
@@ -47,14 +50,12 @@ Vector3d residual(const PairLaw& law, const Eigen::Matrix<double, 6, 1>& x)
   return alart_curnier(law, x.head<3>(), x[3], x.tail<2>()).F;
 }
 
-TEST(Contact, JacobianMatchesFiniteDifferencesInEveryBranch)
+/// B and A against central differences of the residual in each branch,
+/// at random points away from the kinks.
+void check_jacobian(const PairLaw& law, unsigned seed)
 {
-  std::mt19937 gen(7);
+  std::mt19937 gen(seed);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  PairLaw law;
-  law.mu = 0.8;
-  law.r_n = 2.0;
-  law.r_t = 1.5;
   int tested[3] = {0, 0, 0};
   for (int trial = 0; trial < 3000; ++trial)
   {
@@ -62,12 +63,14 @@ TEST(Contact, JacobianMatchesFiniteDifferencesInEveryBranch)
     for (int i = 0; i < 6; ++i)
       x[i] = u(gen);
     const PairResidual r = alart_curnier(law, x.head<3>(), x[3], x.tail<2>());
-    // Away from the kinks: |sigma_n| and | |tau| - rho | not small.
-    const double sigma_n = x[0] - law.r_n * x[3];
+    // Away from the kinks: |sigma_n|, the friction limit and | |tau| - rho |
+    // not small.
+    const double sigma_n = x[0] + law.tension - law.r_n * x[3];
     const Vector2d tau = x.segment<2>(1) - law.r_t * x.tail<2>();
-    const double rho = law.mu * std::max(sigma_n, 0.0);
+    const double limit = law.cohesion + law.mu * (sigma_n - law.tension);
+    const double rho = sigma_n >= 0.0 ? std::max(limit, 0.0) : 0.0;
     if (std::abs(sigma_n) < 1e-3 || std::abs(tau.norm() - rho) < 1e-3 ||
-        tau.norm() < 1e-3)
+        tau.norm() < 1e-3 || std::abs(limit) < 1e-3)
       continue;
     Eigen::Matrix<double, 3, 6> fd;
     const double h = 1e-7;
@@ -88,6 +91,19 @@ TEST(Contact, JacobianMatchesFiniteDifferencesInEveryBranch)
   }
   for (int s = 0; s < 3; ++s)
     EXPECT_GT(tested[s], 100) << "branch " << s << " barely sampled";
+}
+
+TEST(Contact, JacobianMatchesFiniteDifferencesInEveryBranch)
+{
+  PairLaw law;
+  law.mu = 0.8;
+  law.r_n = 2.0;
+  law.r_t = 1.5;
+  check_jacobian(law, 7);
+  // A bonded pair: tension and cohesion shift the branches.
+  law.tension = 0.3;
+  law.cohesion = 0.2;
+  check_jacobian(law, 11);
 }
 
 /// An isotropic pair: W = diag(cn, ct, ct).
@@ -178,6 +194,70 @@ TEST(Contact, PairSolutionsMatchTheClosedForms)
       wT_old = s.w.tail<2>();
     }
   }
+}
+
+// A bonded pair (tension T, cohesion C) with W = diag(cn, ct, ct), closed
+// forms: a free opening d holds closed with P_n = -d / cn while d / cn <
+// T, and beyond opens with P_n = -T and gap d - cn T (the bond failed); a
+// compressed pair (P_n = delta / cn) sticks under a free slip needing
+// 0.9 (C + mu P_n) and slides at |P_T| = C + mu P_n under one needing 1.1
+// times that (the bond failed). Tolerance 1e-10 (the iteration's 1e-12).
+TEST(Contact, BondedPairHoldsUpToItsStrength)
+{
+  const double cn = 2e-9, ct = 5e-9; // m/N
+  PairLaw law;
+  law.mu = 0.75;
+  law.r_n = 1.0 / cn;
+  law.r_t = 1.0 / ct;
+  law.tension = 2e5;  // N
+  law.cohesion = 3e5; // N
+  const Matrix3d W = flexibility(cn, ct);
+  const Vector2d zero2 = Vector2d::Zero();
+  for (double f : {0.9, 1.1})
+  {
+    const double d = f * law.tension * cn;
+    const auto s = solve_pair(law, W, Vector3d(d, 0, 0), zero2, 0.0);
+    ASSERT_TRUE(s.converged);
+    if (f < 1.0)
+    {
+      EXPECT_EQ(s.state, PairState::stick);
+      EXPECT_NEAR(s.p[0], -d / cn, 1e-10 * law.tension);
+      EXPECT_NEAR(s.w[0], 0.0, 1e-10 * d);
+    }
+    else
+    {
+      EXPECT_EQ(s.state, PairState::open);
+      EXPECT_NEAR(s.p[0], -law.tension, 1e-10 * law.tension);
+      EXPECT_NEAR(s.w[0], d - cn * law.tension, 1e-10 * d);
+    }
+    EXPECT_EQ(bond_failed(law, s.state), f > 1.0);
+  }
+  const double delta = 1e-4, Pn = delta / cn;
+  const double strength = law.cohesion + law.mu * Pn;
+  const Vector2d e(0.6, 0.8);
+  for (double f : {0.9, 1.1})
+  {
+    const Vector2d s_free = f * strength * ct * e;
+    const auto s =
+        solve_pair(law, W, Vector3d(-delta, s_free[0], s_free[1]), zero2, 0.0);
+    ASSERT_TRUE(s.converged);
+    EXPECT_NEAR(s.p[0], Pn, 1e-10 * Pn);
+    if (f < 1.0)
+    {
+      EXPECT_EQ(s.state, PairState::stick);
+      EXPECT_LT((s.p.tail<2>() + s_free / ct).norm(), 1e-10 * strength);
+    }
+    else
+    {
+      EXPECT_EQ(s.state, PairState::slip);
+      EXPECT_LT((s.p.tail<2>() + strength * e).norm(), 1e-10 * strength);
+      EXPECT_LT((s.w.tail<2>() - (s_free.norm() - ct * strength) * e).norm(),
+                1e-10 * s_free.norm());
+    }
+    EXPECT_EQ(bond_failed(law, s.state), f > 1.0);
+  }
+  // Without a bond nothing fails.
+  EXPECT_FALSE(bond_failed(PairLaw{}, PairState::open));
 }
 
 using damseis::test::random_problem;

@@ -50,6 +50,10 @@ expect dm_contact_keys_bonded 'joints\.friction: is given while joints\.model = 
 expect dm_contact_concrete 'joints\.model: is "contact" with material\.model = "plastic"' --case "$block" --set joints.model=contact --set material.model=plastic
 expect dm_contact_history_points 'joints\.history_points: has 4 values, not 3 coordinates per point' --case "$block" --set joints.model=contact --set 'joints.history_points=[0, 0, 1, 2]'
 expect dm_contact_dead_load 'joints\.dead_load=glued is not an allowed value; expected one of "joints_active", "cantilever"' --case "$block" --set joints.model=contact --set joints.dead_load=glued
+expect dm_bond_count 'joints\.tensile_strength: has 2 values for 1 joints' --case "$block" --set joints.model=contact --set 'joints.tensile_strength=[1e5, 1e5]'
+expect dm_bond_negative 'joints\.cohesion=\[-1\] is out of range; expected 0 <= cohesion' --case "$block" --set joints.model=contact --set 'joints.cohesion=[-1]'
+expect dm_bond_paper 'joints\.tensile_strength: is given with joints\.formulation = "paper"' --case "$block" --set joints.model=contact --set 'joints.tensile_strength=[1e5]' --set joints.formulation=paper
+expect dm_bond_bonded 'joints\.cohesion: is given while joints\.model = "bonded"' --case "$block" --set 'joints.cohesion=[1e5]'
 
 if [ "$failures" -ne 0 ]; then
   echo "$failures bad-input checks failed"; exit 1

@@ -64,10 +64,15 @@
 #     interface force (fitted over 0.5-3.5 ms), reaches -v0 (3%: the front
 #     spreads over an element, h/c = 2.5% of it; measured -0.9%; the pairs
 #     themselves chatter, so the times they open are round-off-sensitive),
-#     then the bar flies back at -v0 (its mean velocity over 5-8 ms: 1%,
-#     momentum and kinetic energy of the rigid motion; measured -0.4% to
-#     +0.7% as round-off moves the chattering pairs' last contacts), and
-#     the interface stress rho c v0 = 2.5 MPa while in contact, from the
+#     then the bar flies back at -v0 (momentum and kinetic energy of the
+#     rigid motion): its mean velocity averaged over 4.2-8.2 ms, one period
+#     2L/c of the free bar's fundamental mode, so that its vibration
+#     cancels. 2%: the rebound depends on the chattering pairs' last
+#     contacts, which round-off moves; two condensations equal in exact
+#     arithmetic (on the pairs' relative displacements, and on both nodes'
+#     displacements) gave +1.3% and +0.5%, a change of the NCP's
+#     convergence test -0.5%, earlier builds -0.4% to +0.7%.
+#     And the interface stress rho c v0 = 2.5 MPa while in contact, from the
 #     momentum theorem: rho L times the slope of the bar's mean velocity
 #     over 0.5-3.5 ms (2%; measured +0.7%). The wall has no mass, so no
 #     impact correction applies (a node without mass has no velocity of
@@ -76,8 +81,28 @@
 #  8. A run stopped at a checkpoint (step 300 of 600, the cube sliding) and
 #     restarted gives the uninterrupted run: crest history within 1e-9 of
 #     the slip (the restart rebuilds the M and K images from u, v, a:
-#     round-off; measured 3e-14 m), the same NCP iterations and pair state
-#     changes (the contact state is in the checkpoint).
+#     round-off; measured 3e-14 m), the same pair state changes (the
+#     contact state is in the checkpoint) and the same NCP iterations
+#     within 0.5% (that round-off can move a convergence decision at the
+#     tolerance by one iteration: measured once, 0 against 1 iteration at
+#     t = 0.482 s with every pair sliding).
+#  9. The paper's arch dam (arch_dam, 13 contact joints, coarse 12 m
+#     mesh), the joints grouted after the cantilevers carry their dead
+#     weight (the default) and no other load (no reservoir): the joints
+#     carry nothing. Every pair force below 1e-3 kN (1e-8 of a pair's
+#     share of the dead weight, about rho g x 100 m x 50 m2 = 1e5 kN) and
+#     every gap below 1e-9 m (round-off).
+# 10. A grouted joint (tests/data/case/sliding_block.toml, P1): tensile
+#     strength f_t = 0.1 MPa, cohesion 0.2 MPa, the cube pulled up by a
+#     body force b besides its weight, net uplift (b - rho g) V = k f_t A
+#     (V = 1 m3, A = 1 m2). Statics: the joint's forces on the cube sum to
+#     -k f_t A, so at k = 1.1 some pair's tension must exceed f_t times its
+#     area: the bonds fail one after the other and nothing holds the cube
+#     (exit 4). At k = 0.9 it holds: forces summing to -0.9 f_t A (1e-6, the
+#     static iteration's tolerance), no pair open, no bond broken, and no
+#     pair's tension above f_t times its area (the law; the pairs carry
+#     0.78 to 3.5 kN: the traction is not uniform, so the cube lets go
+#     between k = 0.9 and 0.98).
 # Usage: joint_contact_checks.sh DAM_MODEL MPIEXEC PYTHON SOURCE_DIR
 set -eu
 dm=$1 mpiexec=$2 python=$3 src=$4
@@ -108,6 +133,7 @@ for stop in "--set run.stop_at_step=300" "--set run.restart=true"; do
 done
 "$dm" --case "$src/tests/data/case/bar_impact.toml" --out "$work/bar" \
   --set output.plots=false --set output.every=100000 --set time.hht_alpha=-0.1 \
+  --set time.duration=0.0082 \
   >/dev/null
 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
   OMPI_MCA_rmaps_base_oversubscribe=1 "$mpiexec" -n 2 "$dm" --case "$case" \
@@ -144,6 +170,28 @@ if [ "$status" -ne 4 ] || ! grep -q 'a block has no support but its joints' \
   exit 1
 fi
 echo "ok   cantilever dead load on a floating block: $(cat "$work/cantilever.err")"
+
+# (10) A grouted joint pulled apart.
+bz() { "$python" -c "print(2400 * 9.81 + $1 * 1e5)"; }
+bond=(--set mesh.order=1 "${contact[@]}" --set 'joints.tensile_strength=[1e5]'
+  --set 'joints.cohesion=[2e5]' --set 'loads.body_force_groups=[block]')
+run bond_holds "${bond[@]}" --set time.duration=0.002 \
+  --set "loads.body_force=[0, 0, $(bz 0.9)]"
+status=0
+"$dm" --case "$case" --out "$work/bond_fails" --set output.plots=false \
+  "${bond[@]}" --set "loads.body_force=[0, 0, $(bz 1.1)]" \
+  >/dev/null 2>"$work/bond.err" || status=$?
+if [ "$status" -ne 4 ] || ! grep -q 'no static equilibrium' "$work/bond.err" ||
+  [ -e "$work/bond_fails/summary.json" ]; then
+  echo "FAIL grouted joint, uplift 1.1 f_t A: exit $status, $(cat "$work/bond.err")"
+  exit 1
+fi
+echo "ok   grouted joint, uplift 1.1 f_t A: $(cat "$work/bond.err")"
+
+# (9) The arch dam grouted after its dead load, under the dead load alone.
+"$(dirname "$dm")/arch_dam" --out "$work/arch_dead" --set output.plots=false \
+  --set joints.model=contact --set reservoir.level=0 --set mesh.size=12 \
+  --set time.duration=0.01 >/dev/null
 
 "$python" - "$work" <<'PY'
 import csv, json, math, sys
@@ -218,6 +266,30 @@ check("static friction threshold, 0.98 mu rho g holds",
       f"(statics: {expected[0]:.3f}, 0, {expected[2]:.3f}; {err:.1e} of rho g V); "
       f"{sum(p['state'] == 'slip' for p in r)} of {len(r)} pairs at the friction limit")
 
+# The grouted joint holding 0.9 f_t A (10).
+with open(f"{work}/bond_holds/joint_static.csv") as f:
+    r = list(csv.DictReader(f))
+fz = sum(float(p["f_z_kN"]) for p in r) * 1e3
+f_t = 1e5
+worst = max(-float(p["P_n_kN"]) * 1e3 / (f_t * float(p["area_m2"])) for p in r)
+stage = json.load(open(f"{work}/bond_holds/summary.json"))["joints"]["static_stage"]
+check("grouted joint holds 0.9 f_t A",
+      abs(fz + 0.9 * f_t) < 1e-6 * f_t and all(p["state"] == "stick" for p in r)
+      and all(p["bond"] == "intact" for p in r) and stage["bonds_broken"] == 0
+      and worst <= 1.0 + 1e-9,
+      f"joint forces on the cube {fz / 1e3:.6f} kN (statics -{0.9 * f_t / 1e3:.1f}); "
+      f"largest pair tension {worst:.3f} of f_t times its area; "
+      f"{stage['bonds_broken']} bonds broken")
+
+# The arch dam's joints under the dead load they were grouted after (9).
+with open(f"{work}/arch_dead/joint_static.csv") as f:
+    r = list(csv.DictReader(f))
+force = max(abs(float(p[k])) for p in r for k in ("P_n_kN", "P_a_kN", "P_b_kN"))
+gap = max(abs(float(p["gap_cm"])) for p in r) / 100.0
+check("arch dam grouted after its dead load carries nothing",
+      force < 1e-3 and gap < 1e-9,
+      f"{len(r)} pairs: largest force {force:.2e} kN, largest gap {gap:.2e} m")
+
 # The Coulomb oscillator (4).
 m, k, v0 = 2400.0, 7.58e7 * 0.04 / 2.0, 0.66
 w, delta = math.sqrt(k / m), mu * m * g / k
@@ -277,7 +349,8 @@ check("restart = uninterrupted run", len(s1) == len(s2) and diff < 1e-9 * 0.147,
       f"crest history differs by {diff:.2e} m")
 j1, j2 = joints("p1"), joints("restarted")
 check("restart: same contact work",
-      j1["ncp_iterations"] == j2["ncp_iterations"] and
+      abs(j1["ncp_iterations"] - j2["ncp_iterations"]) <=
+      0.005 * j1["ncp_iterations"] and
       j1["state_changes"] == j2["state_changes"],
       f"NCP iterations {j1['ncp_iterations']} / {j2['ncp_iterations']}, "
       f"state changes {j1['state_changes']} / {j2['state_changes']}")
@@ -301,9 +374,9 @@ last = max(r[0] for r in steps if r[1] < pairs)
 check("bar: contact duration 2L/c", abs(t_contact / (2 * L / c) - 1) < 0.03,
       f"{1e3 * t_contact:.3f} ms, 2L/c = {2e3 * L / c:.3f} ms (the last pair "
       f"touching at {1e3 * last:.2f} ms)")
-after = [r[4] for r in g if 0.005 <= r[0] <= 0.008]
+after = [r[4] for r in g if 0.0042 <= r[0] <= 0.0082]
 v_after = sum(after) / len(after)
-check("bar: flies back at -v0", abs(v_after / -v0 - 1) < 0.01,
+check("bar: flies back at -v0", abs(v_after / -v0 - 1) < 0.02,
       f"mean velocity {v_after:.5f} m/s")
 sigma = -rho * L * slope
 check("bar: interface stress rho c v0", abs(sigma / (rho * c * v0) - 1) < 0.02,

@@ -50,7 +50,9 @@ ArchDamModel arch_dam_model(MPI_Comm comm, const ArchDamConfig& cfg)
     for (const auto& j : arch.joints)
       c.joints.push_back({std::string(1, j.label), j.tag_side1, j.tag_side2,
                           cfg.friction.at(j.label),
-                          cfg.keyed.find(j.label) != std::string::npos});
+                          cfg.keyed.find(j.label) != std::string::npos,
+                          cfg.bonds.at(j.label).first,
+                          cfg.bonds.at(j.label).second});
     c.facet_tags = arch.model.facet_tags.get();
     c.restitution = cfg.restitution;
     c.statics = cfg.statics;

@@ -31,6 +31,8 @@ struct ArchDamConfig
   /// static stage.
   std::map<char, double> friction;
   std::string keyed; ///< labels of the keyed joints
+  /// Bonds per joint label: tensile strength and cohesion [Pa].
+  std::map<char, std::pair<double, double>> bonds;
   double restitution = 1.0;
   joint::StaticContactSettings statics;
   std::vector<std::array<double, 3>> history_points;

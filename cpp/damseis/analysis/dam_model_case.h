@@ -6,6 +6,7 @@
 #pragma once
 
 #include "concrete_settings.h"
+#include "joint_contact_keys.h"
 #include "seismic_settings.h"
 #include <array>
 #include <damseis/fem/elastic_model.h>
@@ -43,6 +44,7 @@ struct JointContactConfig
   bool enabled = false;
   std::vector<double> friction; ///< per joint
   std::vector<bool> keyed;      ///< per joint
+  JointBonds bonds;             ///< per joint
   double restitution = 1.0;
   joint::StaticContactSettings statics;
   std::vector<std::array<double, 3>> history_points;

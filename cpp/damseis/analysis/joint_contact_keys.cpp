@@ -1,4 +1,5 @@
 #include "joint_contact_keys.h"
+#include <algorithm>
 
 namespace damseis::analysis
 {
@@ -24,6 +25,16 @@ void add_joint_contact_keys(input::Schema& s,
            "paper's polar form (P_n, P_tau, theta); bench/results/"
            "ncp-formulations-*.md compares them",
            {"alart_curnier", "paper"});
+  s.real_array("joints.tensile_strength", "[]", "Pa",
+               "contact: tensile strength of each joint's bond (grouted "
+               "joints; lost for good where the joint opens or slides), in "
+               "the order of the joints' friction ([]: 0 each, the paper's)")
+      .between(0, 1e8);
+  s.real_array("joints.cohesion", "[]", "Pa",
+               "contact: cohesion of each joint's bond (shear strength "
+               "cohesion + friction x compression until the bond fails), in "
+               "the order of the joints' friction ([]: 0 each)")
+      .between(0, 1e8);
   s.real_array("joints.history_points", "[]", "m",
                "contact: points (x, y, z each) whose nearest pairs' opening "
                "and sliding are recorded per step (joint_histories.csv); "
@@ -68,15 +79,41 @@ read_joint_history_points(const input::Case& c)
   return points;
 }
 
+JointBonds read_joint_bonds(const input::Case& c, std::size_t joints,
+                            const std::string& order)
+{
+  JointBonds b;
+  for (const char* key : {"joints.tensile_strength", "joints.cohesion"})
+  {
+    std::vector<double> v = c.reals(key);
+    if (!v.empty() && v.size() != joints)
+      c.fail(key,
+             "has " + std::to_string(v.size()) + " values for " +
+                 std::to_string(joints) + " joints",
+             "one value per joint (" + order + "), or [] for none");
+    if (v.empty())
+      v.assign(joints, 0.0);
+    const bool bonded =
+        std::any_of(v.begin(), v.end(), [](double x) { return x > 0.0; });
+    if (bonded && c.string("joints.formulation") == "paper")
+      c.fail(key, "is given with joints.formulation = \"paper\"",
+             "joints.formulation = \"alart_curnier\" for bonded joints");
+    (std::string(key) == "joints.cohesion" ? b.cohesion : b.tensile_strength) =
+        std::move(v);
+  }
+  return b;
+}
+
 void refuse_contact_keys_when_bonded(const input::Case& c,
                                      const std::vector<std::string>& keys)
 {
   if (c.string("joints.model") == "contact")
     return;
   std::vector<std::string> all = {
-      "joints.restitution",    "joints.impact_correction",
-      "joints.dead_load",      "joints.static_increments",
-      "joints.history_points", "joints.formulation"};
+      "joints.restitution",      "joints.impact_correction",
+      "joints.dead_load",        "joints.static_increments",
+      "joints.history_points",   "joints.formulation",
+      "joints.tensile_strength", "joints.cohesion"};
   all.insert(all.end(), keys.begin(), keys.end());
   for (const auto& key : all)
   {

@@ -1,7 +1,8 @@
 // The case keys of contact joints that every demo with joints shares:
 // restitution of the impact correction and the static stage (how the dead
-// weight is carried, the increments of the rest of the static load). The
-// demos add their own keys for which joints and their friction.
+// weight is carried, the increments of the rest of the static load), the
+// bonds of grouted joints. The demos add their own keys for which joints
+// and their friction.
 #pragma once
 
 #include <array>
@@ -14,7 +15,8 @@
 namespace damseis::analysis
 {
 /// joints.restitution, joints.impact_correction, joints.dead_load (default
-/// `dead_load_default`), joints.static_increments.
+/// `dead_load_default`), joints.static_increments, joints.formulation,
+/// joints.history_points, joints.tensile_strength, joints.cohesion.
 void add_joint_contact_keys(input::Schema& s,
                             const std::string& dead_load_default);
 
@@ -32,6 +34,20 @@ contact::NcpSettings read_ncp_settings(const input::Case& c);
 /// pair).
 std::vector<std::array<double, 3>>
 read_joint_history_points(const input::Case& c);
+
+/// A grouted joint's bond until it fails (per joint, in the demo's joint
+/// order).
+struct JointBonds
+{
+  std::vector<double> tensile_strength; ///< [Pa]
+  std::vector<double> cohesion;         ///< [Pa]
+};
+
+/// joints.tensile_strength and joints.cohesion for `joints` joints ([]: 0
+/// each); `order` says the demo's joint order in messages. Fails if a list
+/// has another length, or a bond is given with the paper's formulation.
+JointBonds read_joint_bonds(const input::Case& c, std::size_t joints,
+                            const std::string& order);
 
 /// Fails (input::InputError) if one of `keys` (the contact keys above and
 /// the demo's own) is given while joints.model is not "contact".

@@ -18,6 +18,7 @@
 #include <damseis/geometry/tags.h>
 #include <damseis/joint/contact_stepper.h>
 #include <damseis/joint/joint_recorder.h>
+#include <damseis/joint/joint_surfaces.h>
 #include <damseis/linalg/all_gather.h>
 #include <damseis/linalg/modal.h>
 #include <damseis/linalg/petsc_vectors.h>
@@ -96,6 +97,7 @@ private:
   std::unique_ptr<engine::Stepper> _stepper;
   joint::ContactStepper* _contact_stepper = nullptr; ///< _stepper, if contact
   std::unique_ptr<joint::JointRecorder> _joints;
+  std::unique_ptr<joint::JointSurfaces> _joint_surfaces;
   std::unique_ptr<FullDisplacement> _u;
   std::unique_ptr<StressRecorder> _stresses;
   std::unique_ptr<FaceDirectionRecorder> _face_directions; ///< 3D faces
@@ -247,7 +249,7 @@ void LinearSeismicAnalysis::time_history()
     auto contact =
         std::make_shared<joint::CondensedContact>(*_pairs, _contact->ncp);
     const joint::StaticContactResult& st = *_static_contact;
-    contact->set_state(st.g0, st.w, st.p, st.states);
+    contact->set_state(st.g0, st.w, st.p, st.states, st.broken);
     auto stepper = std::make_unique<joint::ContactStepper>(
         _M.mat(), _K.mat(), _modal->damping, _s.scheme, contact,
         _u_static.vec(), _contact->restitution);
@@ -372,6 +374,10 @@ void LinearSeismicAnalysis::add_recorders(engine::TimeHistory& history)
     _joints = std::make_unique<joint::JointRecorder>(
         *_contact_stepper, _static_contact->w, _contact->history_points);
     history.observe(*_joints);
+    _joint_surfaces = std::make_unique<joint::JointSurfaces>(
+        *_fe.V()->mesh(), *_contact->facet_tags, *_contact_stepper,
+        _static_contact->w, _folder.dir, _s.output_every);
+    history.observe(*_joint_surfaces);
   }
 }
 
@@ -434,6 +440,8 @@ json LinearSeismicAnalysis::results()
   if (_joints)
   {
     summary["joints"] = _joints->write(_comm, dir, pair_faces());
+    _joint_surfaces->write_envelope(_joints->largest_opening(),
+                                    _joints->largest_sliding());
     summary["joints"]["static_stage"] = {
         {"dead_load", _contact->statics.cantilever_dead_load
                           ? "cantilevers (joints disconnected)"

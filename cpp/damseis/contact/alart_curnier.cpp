@@ -10,10 +10,11 @@ PairResidual alart_curnier(const PairLaw& law, const Eigen::Vector3d& p,
   PairResidual r;
   r.B.setZero();
   r.A.setZero();
-  // Normal: F_n = P_n - <sigma_n>, sigma_n = P_n - r_n g.
-  const double sigma_n = p[0] - law.r_n * g;
+  // Normal: F_n = P_n + T - <sigma_n>, sigma_n = P_n + T - r_n g (T: the
+  // bond's tension; the condition P_n + T >= 0 complementary to the gap).
+  const double sigma_n = p[0] + law.tension - law.r_n * g;
   const bool closed = sigma_n >= 0.0;
-  r.F[0] = p[0] - std::max(sigma_n, 0.0);
+  r.F[0] = p[0] + law.tension - std::max(sigma_n, 0.0);
   if (closed)
     r.A(0, 0) = law.r_n; // dF_n/dP_n = 0, dF_n/dg = r_n
   else
@@ -27,8 +28,12 @@ PairResidual alart_curnier(const PairLaw& law, const Eigen::Vector3d& p,
     r.state = closed ? PairState::stick : PairState::open;
     return r;
   }
-  // Tangential: F_T = P_T - Pi_rho(tau), tau = P_T - r_t ds.
-  const double rho = law.mu * std::max(sigma_n, 0.0);
+  // Tangential: F_T = P_T - Pi_rho(tau), tau = P_T - r_t ds, rho = C + mu
+  // P_n at the solution (sigma_n - T = P_n there). Where rho > 0 its
+  // derivatives are those without a bond: mu (P_n), -mu r_n (g).
+  const double rho =
+      closed ? std::max(law.cohesion + law.mu * (sigma_n - law.tension), 0.0)
+             : 0.0;
   const Eigen::Vector2d tau = PT - law.r_t * ds;
   const double nt = tau.norm();
   if (!closed || rho == 0.0)

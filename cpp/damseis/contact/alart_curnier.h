@@ -22,6 +22,12 @@ struct PairLaw
   bool keyed = false; ///< shear keys: no sliding (mu -> infinity)
   double r_n = 1.0;   ///< scaling of the gap in the normal residual [N/m]
   double r_t = 1.0;   ///< scaling of the slip in the tangential one [N/m]
+  /// An intact bond (grouted joint): the tension T it carries (P_n >= -T)
+  /// and its cohesion C (|P_T| <= C + mu P_n) [N: strength times the
+  /// pair's area]. 0: none (the paper's joints). A bond that fails is
+  /// gone for good: the caller sets both to 0 (bond_failed()).
+  double tension = 0.0;
+  double cohesion = 0.0;
 };
 
 enum class PairState
@@ -41,10 +47,18 @@ struct PairResidual
   PairState state = PairState::open;
 };
 
-/// F_n = P_n - <P_n - r_n g>, F_T = P_T - Pi_rho(P_T - r_t ds), rho = mu
-/// <P_n - r_n g> (keyed: F_T = r_t ds).
+/// F_n = P_n + T - <sigma_n>, sigma_n = P_n + T - r_n g; F_T = P_T -
+/// Pi_rho(P_T - r_t ds), rho = <C + mu (sigma_n - T)> while closed, 0 open
+/// (keyed: F_T = r_t ds). Without a bond (T = C = 0) the classic form.
 PairResidual alart_curnier(const PairLaw& law, const Eigen::Vector3d& p,
                            double g, const Eigen::Vector2d& ds);
+
+/// Whether a bonded pair's bond has failed in the state `s`: it opened
+/// (the tension reached T) or slid (the shear reached C + mu P_n).
+inline bool bond_failed(const PairLaw& law, PairState s)
+{
+  return (law.tension > 0.0 || law.cohesion > 0.0) && s != PairState::stick;
+}
 
 /// One pair whose relative displacement depends linearly on its force, w =
 /// w_free + W p (W: the pair's 3x3 flexibility, symmetric positive

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 namespace damseis::contact
 {
@@ -254,6 +255,12 @@ NcpReport solve_ncp_paper(const ContactProblem& c, const Eigen::VectorXd& p0,
 {
   // The starts of solve_ncp: the warm start and the stuck forces, the one
   // of smaller residual (measured in formulation A) first.
+  for (const PairLaw& law : c.laws)
+  {
+    if (law.tension > 0.0 || law.cohesion > 0.0)
+      throw std::invalid_argument("the paper's NCP formulation has no bonded "
+                                  "joints (tension, cohesion)");
+  }
   const Eigen::Index n = static_cast<Eigen::Index>(c.laws.size());
   const Eigen::VectorXd stuck = stuck_forces(c);
   auto merit = [&](const Eigen::VectorXd& p)

@@ -1,7 +1,9 @@
 #include "condensed_contact.h"
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <damseis/dynamics/nonlinear_newmark.h>
+#include <damseis/fem/tied_dofs.h>
 #include <map>
 #include <petscblaslapack.h>
 #include <sstream>
@@ -125,6 +127,112 @@ CondensedContact::CondensedContact(PairSet pairs, contact::NcpSettings ncp)
   _g0 = Eigen::VectorXd::Zero(n);
   _wT_ref = Eigen::VectorXd::Zero(2 * n);
   _states.assign(n, contact::PairState::stick);
+  _broken.assign(n, 0);
+}
+
+CondensedContact::~CondensedContact()
+{
+  MatDestroy(&_T);
+  MatDestroy(&_K_prime);
+  VecDestroy(&_b_prime);
+  VecDestroy(&_x_prime);
+}
+
+namespace
+{
+/// Whether a component of node `block` is fixed: a row of K with no
+/// nonzero off the diagonal (the Dirichlet rows of the assembly). 0 for
+/// rows this rank does not own.
+int has_fixed_component(Mat K, std::int64_t block)
+{
+  PetscInt r0 = 0, r1 = 0;
+  MatGetOwnershipRange(K, &r0, &r1);
+  int fixed = 0;
+  for (PetscInt row = 3 * block; row < 3 * block + 3; ++row)
+  {
+    if (row < r0 || row >= r1)
+      continue;
+    PetscInt ncols = 0;
+    const PetscInt* cols = nullptr;
+    const PetscScalar* vals = nullptr;
+    MatGetRow(K, row, &ncols, &cols, &vals);
+    bool coupled = false;
+    for (PetscInt k = 0; k < ncols; ++k)
+      coupled = coupled || (cols[k] != row && vals[k] != 0.0);
+    MatRestoreRow(K, row, &ncols, &cols, &vals);
+    fixed = fixed || !coupled;
+  }
+  return fixed;
+}
+} // namespace
+
+void CondensedContact::choose_schur_unknowns(Mat K)
+{
+  const std::size_t n = _pairs.size();
+  std::map<std::int64_t, int> uses;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    ++uses[_pairs.block1[i]];
+    ++uses[_pairs.block2[i]];
+  }
+  std::vector<int> fixed(2 * n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    fixed[2 * i] = has_fixed_component(K, _pairs.block1[i]);
+    fixed[2 * i + 1] = has_fixed_component(K, _pairs.block2[i]);
+  }
+  MPI_Allreduce(MPI_IN_PLACE, fixed.data(), static_cast<int>(fixed.size()),
+                MPI_INT, MPI_MAX, _comm);
+
+  // The Schur unknowns: the relative displacement of a relative pair (in
+  // its side-2 node's unknowns), both nodes of the others.
+  std::vector<char> relative(n);
+  std::map<std::int64_t, int> position;
+  auto place = [&](std::int64_t block)
+  {
+    auto [it, fresh] =
+        position.try_emplace(block, static_cast<int>(_schur_unknowns.size()));
+    if (fresh)
+    {
+      for (int k = 0; k < 3; ++k)
+        _schur_unknowns.push_back(static_cast<PetscInt>(3 * block + k));
+    }
+    return it->second;
+  };
+  _all_relative = n > 0;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    relative[i] = uses[_pairs.block1[i]] == 1 && uses[_pairs.block2[i]] == 1 &&
+                  !fixed[2 * i] && !fixed[2 * i + 1];
+    _all_relative = _all_relative && relative[i];
+    _slot1.push_back(relative[i] ? -1 : place(_pairs.block1[i]));
+    _slot2.push_back(place(_pairs.block2[i]));
+  }
+  if (std::none_of(relative.begin(), relative.end(),
+                   [](char r) { return r != 0; }))
+    return;
+
+  // T: the identity, and u_b = u_a + r for the relative pairs (rows of b).
+  PetscInt m = 0, N = 0, r0 = 0, r1 = 0;
+  MatGetLocalSize(K, &m, nullptr);
+  MatGetSize(K, &N, nullptr);
+  MatGetOwnershipRange(K, &r0, &r1);
+  MatCreateAIJ(_comm, m, m, N, N, 2, nullptr, 1, nullptr, &_T);
+  for (PetscInt row = r0; row < r1; ++row)
+    MatSetValue(_T, row, row, 1.0, INSERT_VALUES);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    for (PetscInt k = 0; k < 3 && relative[i]; ++k)
+    {
+      const PetscInt row = static_cast<PetscInt>(3 * _pairs.block2[i] + k);
+      if (row >= r0 && row < r1)
+        MatSetValue(_T, row, static_cast<PetscInt>(3 * _pairs.block1[i] + k),
+                    1.0, INSERT_VALUES);
+    }
+  }
+  MatAssemblyBegin(_T, MAT_FINAL_ASSEMBLY);
+  MatAssemblyEnd(_T, MAT_FINAL_ASSEMBLY);
+  MatCreateVecs(K, &_x_prime, &_b_prime);
 }
 
 Eigen::VectorXd CondensedContact::relative(const Eigen::VectorXd& x_s) const
@@ -133,10 +241,25 @@ Eigen::VectorXd CondensedContact::relative(const Eigen::VectorXd& x_s) const
   Eigen::VectorXd w(3 * n);
   for (std::size_t i = 0; i < n; ++i)
   {
-    w.segment<3>(3 * i) = _pairs.frame[i].transpose() *
-                          (x_s.segment<3>(_pos2[i]) - x_s.segment<3>(_pos1[i]));
+    Eigen::Vector3d d = x_s.segment<3>(_slot2[i]);
+    if (_slot1[i] >= 0)
+      d -= x_s.segment<3>(_slot1[i]);
+    w.segment<3>(3 * i) = _pairs.frame[i].transpose() * d;
   }
   return w;
+}
+
+Eigen::VectorXd CondensedContact::schur_forces(const Eigen::VectorXd& p) const
+{
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(_schur_unknowns.size());
+  for (std::size_t i = 0; i < _pairs.size(); ++i)
+  {
+    const Eigen::Vector3d fi = _pairs.frame[i] * p.segment<3>(3 * i);
+    f.segment<3>(_slot2[i]) += fi;
+    if (_slot1[i] >= 0)
+      f.segment<3>(_slot1[i]) -= fi;
+  }
+  return f;
 }
 
 Eigen::VectorXd CondensedContact::pair_forces(const Eigen::VectorXd& p) const
@@ -156,7 +279,17 @@ void CondensedContact::factorize(Mat K_eff)
   const auto t0 = std::chrono::steady_clock::now();
   _comm = PetscObjectComm(reinterpret_cast<PetscObject>(K_eff));
   MPI_Comm_rank(_comm, &_rank);
-  _schur = std::make_unique<linalg::SchurSolver>(K_eff, _unknowns);
+  if (_slot2.empty())
+    choose_schur_unknowns(K_eff);
+  Mat A = K_eff;
+  if (_T)
+  {
+    MatDestroy(&_K_prime);
+    _K_prime = fem::reduce_to_tied(K_eff, _T); // T^T K T
+    A = _K_prime;
+  }
+  _schur.reset();
+  _schur = std::make_unique<linalg::SchurSolver>(A, _schur_unknowns);
   const auto t1 = std::chrono::steady_clock::now();
   // S^-1 (Cholesky, then the inverse: a step then reads half of it twice,
   // less memory traffic than two triangular solves with the factor and a
@@ -167,9 +300,10 @@ void CondensedContact::factorize(Mat K_eff)
   {
     try
     {
-      _S_inv = _schur->take_schur_complement();
+      Eigen::MatrixXd S = _schur->take_schur_complement();
+      _S_inv = _all_relative ? S : std::move(S);
       invert_spd(_S_inv);
-      set_up_flexibility();
+      set_up_flexibility(S);
     }
     catch (const NotPositiveDefinite& e)
     {
@@ -186,21 +320,27 @@ void CondensedContact::factorize(Mat K_eff)
   _factor_seconds += seconds_since(t0);
 }
 
-void CondensedContact::set_up_flexibility()
+void CondensedContact::set_up_flexibility(const Eigen::MatrixXd& S)
 {
   const std::size_t n = _pairs.size();
   // W_ij = Q_i^T (S^-1[2i, 2j] - S^-1[2i, 1j] - S^-1[1i, 2j] + S^-1[1i, 1j])
-  // Q_j, [a b] the 3 x 3 block of the nodes of sides a (of pair i) and b
-  // (of pair j).
+  // Q_j, [a b] the 3 x 3 block of the unknowns a (of pair i) and b (of
+  // pair j): 2 the side-2 node or the relative displacement, 1 the side-1
+  // node (none for a relative pair).
+  auto block = [&](int a, int b) -> Eigen::Matrix3d
+  {
+    if (a < 0 || b < 0)
+      return Eigen::Matrix3d::Zero();
+    return _S_inv.block<3, 3>(a, b);
+  };
   Eigen::MatrixXd W(3 * n, 3 * n);
   for (std::size_t j = 0; j < n; ++j)
   {
     for (std::size_t i = j; i < n; ++i)
     {
-      const Eigen::Matrix3d B = _S_inv.block<3, 3>(_pos2[i], _pos2[j]) -
-                                _S_inv.block<3, 3>(_pos2[i], _pos1[j]) -
-                                _S_inv.block<3, 3>(_pos1[i], _pos2[j]) +
-                                _S_inv.block<3, 3>(_pos1[i], _pos1[j]);
+      const Eigen::Matrix3d B =
+          block(_slot2[i], _slot2[j]) - block(_slot2[i], _slot1[j]) -
+          block(_slot1[i], _slot2[j]) + block(_slot1[i], _slot1[j]);
       const Eigen::Matrix3d Wij =
           _pairs.frame[i].transpose() * B * _pairs.frame[j];
       W.block<3, 3>(3 * i, 3 * j) = Wij;
@@ -209,12 +349,32 @@ void CondensedContact::set_up_flexibility()
   }
   _problem.W = 0.5 * (W + W.transpose());
   // W^-1: Newton directions through z = W d, the dense system on the open
-  // and sliding pairs' rows only (contact/ncp.h).
-  _problem.W_inv = spd_inverse(_problem.W);
+  // and sliding pairs' rows only (contact/ncp.h). With every pair relative,
+  // W = Q^T S^-1 Q, so W^-1 = Q^T S Q (Q the pairs' frames).
+  if (_all_relative)
+  {
+    Eigen::MatrixXd& Wi = _problem.W_inv;
+    Wi.resize(3 * n, 3 * n);
+    for (std::size_t j = 0; j < n; ++j)
+    {
+      for (std::size_t i = j; i < n; ++i)
+      {
+        const Eigen::Matrix3d Vij = _pairs.frame[i].transpose() *
+                                    S.block<3, 3>(_slot2[i], _slot2[j]) *
+                                    _pairs.frame[j];
+        Wi.block<3, 3>(3 * i, 3 * j) = Vij;
+        Wi.block<3, 3>(3 * j, 3 * i) = Vij.transpose();
+      }
+    }
+  }
+  else
+    _problem.W_inv = spd_inverse(_problem.W);
   _problem.laws.clear();
   for (std::size_t i = 0; i < n; ++i)
   {
     contact::PairLaw law = _pairs.law(i);
+    if (_broken[i])
+      law.tension = law.cohesion = 0.0;
     law.r_n = 1.0 / _problem.W(3 * i, 3 * i);
     law.r_t = 2.0 / (_problem.W(3 * i + 1, 3 * i + 1) +
                      _problem.W(3 * i + 2, 3 * i + 2));
@@ -231,16 +391,66 @@ contact::NcpReport CondensedContact::solve_pairs(const Eigen::VectorXd& y,
   _problem.g0 = _g0;
   if (const char* dump = std::getenv("DAMSEIS_DUMP_NCP"))
   {
-    static int dumped = 0; // every solve of the run, in order
-    contact::write_problem(_problem, _p,
-                           std::string(dump) + "_" + std::to_string(dumped++) +
-                               ".bin");
+    // Every solve of the run in order, or every k-th with
+    // DAMSEIS_DUMP_NCP_EVERY=k (a paper-scale problem takes ~300 MB).
+    static int solves = 0;
+    const char* every = std::getenv("DAMSEIS_DUMP_NCP_EVERY");
+    const int k = every ? std::max(1, std::atoi(every)) : 1;
+    if (solves % k == 0)
+      contact::write_problem(_problem, _p,
+                             std::string(dump) + "_" + std::to_string(solves) +
+                                 ".bin");
+    ++solves;
   }
   contact::NcpReport rep = contact::solve_ncp(_problem, _p, _ncp);
+  while (rep.converged && break_failed_bonds(rep.states))
+  {
+    contact::NcpReport again = contact::solve_ncp(_problem, rep.p, _ncp);
+    again.iterations += rep.iterations;
+    again.line_search_steps += rep.line_search_steps;
+    again.gradient_steps += rep.gradient_steps;
+    rep = std::move(again);
+  }
   // x0 + S^-1 G p: the pair displacements of x_s are then those of the
   // NCP's w = w_free + W p (W from the same S^-1) to round-off.
-  x_s = x0 + symmetric_product(_S_inv, pair_forces(rep.p));
+  x_s = x0 + symmetric_product(_S_inv, schur_forces(rep.p));
   return rep;
+}
+
+void CondensedContact::transformed_solve(
+    Vec b, Vec x,
+    const std::function<void(const Eigen::VectorXd&, Eigen::VectorXd&)>& middle)
+{
+  Vec b_solved = b, x_solved = x;
+  if (_T)
+  {
+    MatMultTranspose(_T, b, _b_prime);
+    b_solved = _b_prime;
+    x_solved = _x_prime;
+  }
+  Eigen::VectorXd y, x_s;
+  _schur->condense(b_solved, y);
+  middle(y, x_s);
+  _schur->expand(x_s, x_solved);
+  if (_T)
+    MatMult(_T, _x_prime, x);
+}
+
+bool CondensedContact::break_failed_bonds(
+    const std::vector<contact::PairState>& states)
+{
+  bool any = false;
+  for (std::size_t i = 0; i < states.size(); ++i)
+  {
+    contact::PairLaw& law = _problem.laws[i];
+    if (contact::bond_failed(law, states[i]))
+    {
+      law.tension = law.cohesion = 0.0;
+      _broken[i] = 1;
+      any = true;
+    }
+  }
+  return any;
 }
 
 void CondensedContact::solve(Vec rhs, Vec u, Vec r)
@@ -248,55 +458,61 @@ void CondensedContact::solve(Vec rhs, Vec u, Vec r)
   if (!_schur)
     throw std::logic_error("CondensedContact::solve before factorize");
   const std::size_t n = _pairs.size();
-  auto t0 = std::chrono::steady_clock::now();
-  Eigen::VectorXd y, x_s;
-  _schur->condense(rhs, y);
-  _totals.seconds_bulk += seconds_since(t0);
-
-  t0 = std::chrono::steady_clock::now();
-  // The pair problem on rank 0; its outcome to every rank.
-  std::vector<double> outcome(3 * n * 2 + n + 6, 0.0);
-  if (_rank == 0)
+  const auto t0 = std::chrono::steady_clock::now();
+  double seconds_contact = 0.0;
+  auto pair_problem = [&](const Eigen::VectorXd& y, Eigen::VectorXd& x_s)
   {
-    const contact::NcpReport rep = solve_pairs(y, x_s);
-    Eigen::Map<Eigen::VectorXd>(outcome.data(), 3 * n) = rep.p;
-    Eigen::Map<Eigen::VectorXd>(outcome.data() + 3 * n, 3 * n) = rep.w;
+    const auto t1 = std::chrono::steady_clock::now();
+    const std::vector<char> broken_before = _broken;
+    // The pair problem on rank 0; its outcome to every rank.
+    std::vector<double> outcome(3 * n * 2 + 2 * n + 6, 0.0);
+    if (_rank == 0)
+    {
+      const contact::NcpReport rep = solve_pairs(y, x_s);
+      Eigen::Map<Eigen::VectorXd>(outcome.data(), 3 * n) = rep.p;
+      Eigen::Map<Eigen::VectorXd>(outcome.data() + 3 * n, 3 * n) = rep.w;
+      for (std::size_t i = 0; i < n; ++i)
+      {
+        outcome[6 * n + i] = static_cast<double>(rep.states[i]);
+        outcome[7 * n + i] = _broken[i];
+      }
+      double* tail = outcome.data() + 8 * n;
+      tail[0] = rep.converged ? 1.0 : 0.0;
+      tail[1] = rep.iterations;
+      tail[2] = rep.line_search_steps;
+      tail[3] = rep.gradient_steps;
+      tail[4] = rep.residual;
+    }
+    MPI_Bcast(outcome.data(), static_cast<int>(outcome.size()), MPI_DOUBLE, 0,
+              _comm);
+    const double* tail = outcome.data() + 8 * n;
+    _totals.ncp_iterations += static_cast<long>(tail[1]);
+    _totals.line_search_steps += static_cast<long>(tail[2]);
+    _totals.gradient_steps += static_cast<long>(tail[3]);
+    if (tail[0] != 1.0)
+    {
+      std::ostringstream msg;
+      msg << "the joint contact problem did not converge (" << n
+          << " pairs, residual " << tail[4] << " after "
+          << static_cast<int>(tail[1]) << " Newton iterations)";
+      throw ContactFailure(msg.str());
+    }
+    _p = Eigen::Map<const Eigen::VectorXd>(outcome.data(), 3 * n);
+    _w = Eigen::Map<const Eigen::VectorXd>(outcome.data() + 3 * n, 3 * n);
     for (std::size_t i = 0; i < n; ++i)
-      outcome[6 * n + i] = static_cast<double>(rep.states[i]);
-    double* tail = outcome.data() + 7 * n;
-    tail[0] = rep.converged ? 1.0 : 0.0;
-    tail[1] = rep.iterations;
-    tail[2] = rep.line_search_steps;
-    tail[3] = rep.gradient_steps;
-    tail[4] = rep.residual;
-  }
-  MPI_Bcast(outcome.data(), static_cast<int>(outcome.size()), MPI_DOUBLE, 0,
-            _comm);
-  const double* tail = outcome.data() + 7 * n;
-  _totals.ncp_iterations += static_cast<long>(tail[1]);
-  _totals.line_search_steps += static_cast<long>(tail[2]);
-  _totals.gradient_steps += static_cast<long>(tail[3]);
-  if (tail[0] != 1.0)
-  {
-    std::ostringstream msg;
-    msg << "the joint contact problem did not converge (" << n
-        << " pairs, residual " << tail[4] << " after "
-        << static_cast<int>(tail[1]) << " Newton iterations)";
-    throw ContactFailure(msg.str());
-  }
-  _p = Eigen::Map<const Eigen::VectorXd>(outcome.data(), 3 * n);
-  _w = Eigen::Map<const Eigen::VectorXd>(outcome.data() + 3 * n, 3 * n);
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    const auto s = static_cast<contact::PairState>(outcome[6 * n + i]);
-    _totals.state_changes += s != _states[i];
-    _states[i] = s;
-    _wT_ref.segment<2>(2 * i) = _w.segment<2>(3 * i + 1);
-  }
-  _totals.seconds_contact += seconds_since(t0);
+    {
+      const auto s = static_cast<contact::PairState>(outcome[6 * n + i]);
+      _totals.state_changes += s != _states[i];
+      _states[i] = s;
+      _wT_ref.segment<2>(2 * i) = _w.segment<2>(3 * i + 1);
+      const char broken = outcome[7 * n + i] != 0.0;
+      _totals.bonds_broken += broken && !broken_before[i];
+      _broken[i] = broken;
+    }
+    seconds_contact = seconds_since(t1);
+  };
+  transformed_solve(rhs, u, pair_problem);
 
-  t0 = std::chrono::steady_clock::now();
-  _schur->expand(x_s, u);
   // r = G p on the pair nodes' unknowns.
   VecSet(r, 0.0);
   if (_rank == 0)
@@ -307,7 +523,8 @@ void CondensedContact::solve(Vec rhs, Vec u, Vec r)
   }
   VecAssemblyBegin(r);
   VecAssemblyEnd(r);
-  _totals.seconds_bulk += seconds_since(t0);
+  _totals.seconds_contact += seconds_contact;
+  _totals.seconds_bulk += seconds_since(t0) - seconds_contact;
   ++_totals.solves;
 }
 
@@ -315,11 +532,12 @@ void CondensedContact::solve_free(Vec rhs, Vec u)
 {
   if (!_schur)
     throw std::logic_error("CondensedContact::solve_free before factorize");
-  Eigen::VectorXd y;
-  _schur->condense(rhs, y);
-  if (_rank == 0)
-    y = symmetric_product(_S_inv, y);
-  _schur->expand(y, u);
+  transformed_solve(rhs, u,
+                    [&](const Eigen::VectorXd& y, Eigen::VectorXd& x_s)
+                    {
+                      if (_rank == 0)
+                        x_s = symmetric_product(_S_inv, y);
+                    });
 }
 
 Eigen::VectorXd CondensedContact::relative_of(Vec u) const
@@ -338,24 +556,39 @@ Eigen::VectorXd CondensedContact::relative_of(Vec u) const
   MPI_Allreduce(local.data(), x_s.data(), static_cast<int>(local.size()),
                 MPI_DOUBLE, MPI_SUM,
                 PetscObjectComm(reinterpret_cast<PetscObject>(u)));
-  return relative(x_s);
+  // In the order of unknowns() (both nodes of every pair), not of S's.
+  const std::size_t n = _pairs.size();
+  Eigen::VectorXd w(3 * n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    w.segment<3>(3 * i) = _pairs.frame[i].transpose() *
+                          (x_s.segment<3>(_pos2[i]) - x_s.segment<3>(_pos1[i]));
+  }
+  return w;
 }
 
 void CondensedContact::set_state(const Eigen::VectorXd& g0,
                                  const Eigen::VectorXd& w,
                                  const Eigen::VectorXd& p,
-                                 const std::vector<contact::PairState>& states)
+                                 const std::vector<contact::PairState>& states,
+                                 const std::vector<char>& broken)
 {
   const std::size_t n = _pairs.size();
   if (g0.size() != static_cast<Eigen::Index>(n) ||
       w.size() != static_cast<Eigen::Index>(3 * n) ||
-      p.size() != static_cast<Eigen::Index>(3 * n) || states.size() != n)
+      p.size() != static_cast<Eigen::Index>(3 * n) || states.size() != n ||
+      (!broken.empty() && broken.size() != n))
     throw std::invalid_argument("CondensedContact::set_state: sizes");
   _g0 = g0;
   _w = w;
   _p = p;
   _states = states;
+  _broken = broken.empty() ? std::vector<char>(n, 0) : broken;
   for (std::size_t i = 0; i < n; ++i)
+  {
     _wT_ref.segment<2>(2 * i) = w.segment<2>(3 * i + 1);
+    if (_broken[i] && i < _problem.laws.size()) // factorised already
+      _problem.laws[i].tension = _problem.laws[i].cohesion = 0.0;
+  }
 }
 } // namespace damseis::joint

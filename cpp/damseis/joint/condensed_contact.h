@@ -1,6 +1,6 @@
 // The contact of joint pairs on a linear bulk, condensed onto the pairs
-// (algorithms.md 2.2): the effective matrix is factorised with the pair
-// nodes' unknowns s kept as a dense Schur complement S (rank 0), so that
+// (algorithms.md 2.2): the effective matrix is factorised with the pairs'
+// unknowns s kept as a dense Schur complement S (rank 0), so that
 //   w = w_free + W p,   W = G^T S^-1 G   (3 NC x 3 NC, once per factorisation)
 // and a step costs one ordinary solve (condense, the pair problem, expand)
 // plus dense work on rank 0: the NCP of contact/ncp.h (Alart-Curnier,
@@ -8,13 +8,22 @@
 // read).
 //   G: the pair operator, w_i = Q_i^T (u_b - u_a), forces G p (+Q_i p_i on
 //   side 2, -Q_i p_i on side 1).
+// The unknowns s: a pair whose two nodes are free and in no other pair is
+// condensed on its relative displacement alone. The change of variables
+// u = T u', u_b = u_a + r (T = I but for the identity blocks (b, a); K' =
+// T^T K T) makes r = u'_b, so s holds 3 unknowns per pair instead of 6: S
+// is 4 times smaller, its inverse is W itself but for the pair frames, and
+// W^-1 needs no inversion. Other pairs (a node shared with another pair, or
+// with a fixed component) keep both nodes' unknowns.
 #pragma once
 
 #include "pairs.h"
+#include <algorithm>
 #include <damseis/contact/ncp.h>
 #include <damseis/dynamics/newmark.h>
 #include <damseis/dynamics/nonlinear_newmark.h>
 #include <damseis/linalg/schur_solver.h>
+#include <functional>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -46,6 +55,7 @@ struct ContactTotals
   long gradient_steps = 0;
   long state_changes = 0;       ///< pairs whose state (open/stick/slip) changed
   long impacts = 0;             ///< pairs closing (impact corrections)
+  long bonds_broken = 0;        ///< bonded pairs whose bond failed
   double seconds_bulk = 0.0;    ///< condense + expand (the sparse solve)
   double seconds_contact = 0.0; ///< the dense pair problem on rank 0
   double seconds_impact = 0.0;
@@ -59,6 +69,9 @@ public:
   /// closed joints). The reference of the tangential slip is w_T = 0 until
   /// set_reference().
   explicit CondensedContact(PairSet pairs, contact::NcpSettings ncp = {});
+  ~CondensedContact();
+  CondensedContact(const CondensedContact&) = delete;
+  CondensedContact& operator=(const CondensedContact&) = delete;
 
   void factorize(Mat K_eff) override;
   /// Throws dynamics::StepFailure (on every rank) if the pair problem does
@@ -80,10 +93,15 @@ public:
   double gap(std::size_t i) const { return _g0[i] + _w[3 * i]; }
   /// Sets the state the next solve starts from: the gaps' reference g0
   /// (g = g0 + w_n), the tangential displacement the slip is measured from,
-  /// and the forces (warm start). Same on every rank.
+  /// the forces (warm start) and the pairs whose bond has failed (empty:
+  /// none). Same on every rank.
   void set_state(const Eigen::VectorXd& g0, const Eigen::VectorXd& w,
                  const Eigen::VectorXd& p,
-                 const std::vector<contact::PairState>& states);
+                 const std::vector<contact::PairState>& states,
+                 const std::vector<char>& broken = {});
+  /// Per pair: 1 if its bond has failed (a bonded joint: it carries no
+  /// tension and no cohesion since), else 0. Same on every rank.
+  const std::vector<char>& broken() const { return _broken; }
   const Eigen::VectorXd& g0() const { return _g0; }
   /// The relative displacements w = G^T u of a displacement u, on every
   /// rank (collective).
@@ -92,33 +110,66 @@ public:
   ContactTotals& totals() { return _totals; }
 
   /// The global indices of the pair nodes' unknowns (3 per node, nodes in
-  /// first-seen order of side 1, side 2 over the pairs): S's rows.
+  /// first-seen order of side 1, side 2 over the pairs).
   const std::vector<PetscInt>& unknowns() const { return _unknowns; }
   /// For pair i, the positions in unknowns() of its side-1 and side-2
   /// nodes' first component.
   int position1(std::size_t i) const { return _pos1[i]; }
   int position2(std::size_t i) const { return _pos2[i]; }
+  /// The pairs condensed on their relative displacement alone (3 Schur
+  /// unknowns instead of 6; after the first factorisation).
+  std::size_t relative_pairs() const
+  {
+    return static_cast<std::size_t>(
+        std::count(_slot1.begin(), _slot1.end(), -1));
+  }
 
 private:
-  /// W = G^T S^-1 G and the laws' scalings (rank 0).
-  void set_up_flexibility();
-  /// w = G^T x_s (rank 0).
+  /// The Schur unknowns s and, if some pairs are condensed on their
+  /// relative displacement, T (collective; at the first factorisation:
+  /// fixed components are read from K's rows).
+  void choose_schur_unknowns(Mat K);
+  /// W = G^T S^-1 G (S^-1 in _S_inv), W^-1 (from S if every pair is
+  /// relative, else by inversion) and the laws' scalings (rank 0).
+  void set_up_flexibility(const Eigen::MatrixXd& S);
+  /// w = G^T x_s, x_s on the Schur unknowns (rank 0).
   Eigen::VectorXd relative(const Eigen::VectorXd& x_s) const;
   /// G p on the Schur unknowns (rank 0).
+  Eigen::VectorXd schur_forces(const Eigen::VectorXd& p) const;
+  /// G p on unknowns() (rank 0).
   Eigen::VectorXd pair_forces(const Eigen::VectorXd& p) const;
+  /// The solve of K' x' = T^T b, x = T x' (T = I: none), x' from
+  /// `middle` (y on the Schur unknowns -> x_s).
+  void transformed_solve(Vec b, Vec x,
+                         const std::function<void(const Eigen::VectorXd&,
+                                                  Eigen::VectorXd&)>& middle);
   /// The pair problem on rank 0: p from y; returns the NCP's report.
+  /// Bonds that fail are broken and the problem solved again without them
+  /// until none fails.
   contact::NcpReport solve_pairs(const Eigen::VectorXd& y,
                                  Eigen::VectorXd& x_s);
+  /// Breaks the bonds that failed in `states` (rank 0); whether one did.
+  bool break_failed_bonds(const std::vector<contact::PairState>& states);
 
   PairSet _pairs;
   contact::NcpSettings _ncp;
   std::vector<PetscInt> _unknowns;
   std::vector<int> _pos1, _pos2;
+  /// The Schur unknowns, and pair i's positions in them: its relative
+  /// displacement (relative pairs: _slot1 = -1) or its side-2 and side-1
+  /// nodes.
+  std::vector<PetscInt> _schur_unknowns;
+  std::vector<int> _slot1, _slot2;
+  bool _all_relative = false;
+  Mat _T = nullptr;       ///< the change of variables (null: none)
+  Mat _K_prime = nullptr; ///< T^T K T of the last factorisation
+  Vec _b_prime = nullptr, _x_prime = nullptr;
   std::unique_ptr<linalg::SchurSolver> _schur;
   Eigen::MatrixXd _S_inv;           ///< S^-1, both triangles (rank 0)
   contact::ContactProblem _problem; ///< W, laws (rank 0)
   Eigen::VectorXd _p, _w, _g0, _wT_ref;
   std::vector<contact::PairState> _states;
+  std::vector<char> _broken;
   ContactTotals _totals;
   double _factor_seconds = 0.0;
   MPI_Comm _comm = MPI_COMM_NULL;

@@ -162,13 +162,16 @@ void ContactStepper::save(engine::Arrays& arrays) const
   for (auto state : c.states())
     s.push_back(static_cast<double>(state));
   arrays["contact_state"] = s;
+  arrays["contact_broken"] =
+      std::vector<double>(c.broken().begin(), c.broken().end());
   const ContactTotals& t = c.totals();
   arrays["contact_totals"] = {static_cast<double>(t.solves),
                               static_cast<double>(t.ncp_iterations),
                               static_cast<double>(t.line_search_steps),
                               static_cast<double>(t.gradient_steps),
                               static_cast<double>(t.state_changes),
-                              static_cast<double>(t.impacts)};
+                              static_cast<double>(t.impacts),
+                              static_cast<double>(t.bonds_broken)};
 }
 
 void ContactStepper::restore(const engine::CheckpointData& data)
@@ -185,9 +188,11 @@ void ContactStepper::restore(const engine::CheckpointData& data)
   std::vector<contact::PairState> s(n);
   for (std::size_t i = 0; i < n; ++i)
     s[i] = static_cast<contact::PairState>(static_cast<int>(states[i]));
+  const Eigen::VectorXd broken = read("contact_broken", n);
   _contact->set_state(read("contact_g0", n), read("contact_w", 3 * n),
-                      read("contact_p", 3 * n), s);
-  const Eigen::VectorXd t = read("contact_totals", 6);
+                      read("contact_p", 3 * n), s,
+                      std::vector<char>(broken.begin(), broken.end()));
+  const Eigen::VectorXd t = read("contact_totals", 7);
   ContactTotals& totals = _contact->totals();
   totals.solves = static_cast<long>(t[0]);
   totals.ncp_iterations = static_cast<long>(t[1]);
@@ -195,6 +200,7 @@ void ContactStepper::restore(const engine::CheckpointData& data)
   totals.gradient_steps = static_cast<long>(t[3]);
   totals.state_changes = static_cast<long>(t[4]);
   totals.impacts = static_cast<long>(t[5]);
+  totals.bonds_broken = static_cast<long>(t[6]);
 }
 
 std::string ContactStepper::progress_note(const dynamics::StepReport&) const

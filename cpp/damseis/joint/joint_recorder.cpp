@@ -280,6 +280,8 @@ nlohmann::json JointRecorder::write(MPI_Comm comm,
   const ContactTotals& t = _stepper.contact().totals();
   return {{"model", "contact"},
           {"pairs", pairs.size()},
+          {"pairs_condensed_on_relative_displacement",
+           _stepper.contact().relative_pairs()},
           {"max_opening_cm", 100.0 * widest},
           {"max_sliding_cm", 100.0 * slide},
           {"table", table},
@@ -289,6 +291,7 @@ nlohmann::json JointRecorder::write(MPI_Comm comm,
           {"gradient_steps", t.gradient_steps},
           {"state_changes", t.state_changes},
           {"impacts", t.impacts},
+          {"bonds_broken", t.bonds_broken},
           {"seconds",
            {{"bulk_solve", t.seconds_bulk},
             {"contact_solve", t.seconds_contact},
@@ -310,8 +313,8 @@ nlohmann::json write_static_pairs(MPI_Comm comm,
   if (rank == 0)
   {
     out.open(dir / "joint_static.csv");
-    out << "joint,x,y,z,gap_cm,state,P_n_kN,P_a_kN,P_b_kN,f_x_kN,f_y_kN,"
-           "f_z_kN\n";
+    out << "joint,x,y,z,area_m2,gap_cm,state,bond,P_n_kN,P_a_kN,P_b_kN,"
+           "f_x_kN,f_y_kN,f_z_kN\n";
   }
   for (std::size_t i = 0; i < pairs.size(); ++i)
   {
@@ -321,16 +324,22 @@ nlohmann::json write_static_pairs(MPI_Comm comm,
     open += s.states[i] == contact::PairState::open;
     if (rank != 0)
       continue;
-    out << pairs.joints[pairs.joint[i]].label << "," << pairs.x[i][0] << ","
-        << pairs.x[i][1] << "," << pairs.x[i][2] << ","
+    const JointSpec& joint = pairs.joints[pairs.joint[i]];
+    const bool bonded = joint.tensile_strength > 0.0 || joint.cohesion > 0.0;
+    out << joint.label << "," << pairs.x[i][0] << "," << pairs.x[i][1] << ","
+        << pairs.x[i][2] << "," << pairs.area[i] << ","
         << 100.0 * (s.g0[i] + s.w[3 * i]) << ","
-        << state_name[static_cast<int>(s.states[i])];
+        << state_name[static_cast<int>(s.states[i])] << ","
+        << (!bonded       ? "none"
+            : s.broken[i] ? "broken"
+                          : "intact");
     for (double v : {p[0], p[1], p[2], f[0], f[1], f[2]})
       out << "," << v / 1e3;
     out << "\n";
   }
   return {
       {"pairs_open", open},
+      {"bonds_broken", std::count(s.broken.begin(), s.broken.end(), 1)},
       {"force_on_side2_kN", {total[0] / 1e3, total[1] / 1e3, total[2] / 1e3}}};
 }
 } // namespace damseis::joint

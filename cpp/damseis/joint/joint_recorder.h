@@ -25,7 +25,8 @@ struct PairFace
 };
 
 /// Writes joint_static.csv into `dir` (rank 0): per pair after the static
-/// stage its gap [cm], state (open, stick, slip) and force on side 2, in
+/// stage its area [m2], gap [cm], state (open, stick, slip), bond (none,
+/// intact, broken) and force on side 2, in
 /// the pair's frame (P_n: compression positive; P_a along t_a, P_b) and in
 /// x, y, z [kN]. Returns the summary's entries: the totals of the joints'
 /// forces in x, y, z and the pairs open.
@@ -51,6 +52,10 @@ public:
   /// the summary's entries.
   nlohmann::json write(MPI_Comm comm, const std::filesystem::path& dir,
                        const std::vector<PairFace>& faces) const;
+
+  /// Per pair: the largest opening and sliding so far [m].
+  const std::vector<double>& largest_opening() const { return _open; }
+  const std::vector<double>& largest_sliding() const { return _slide; }
 
 private:
   /// joint_histories.csv: t, then opening and sliding [cm] of each pair.

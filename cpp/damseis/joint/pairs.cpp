@@ -63,9 +63,9 @@ owned_facets(const dolfinx::mesh::Mesh& mesh,
   return out;
 }
 
-/// Area-weighted normals (global block, n_x, n_y, n_z) at the nodes of the
-/// facets tagged `tag` whose cell is owned here: each facet's normal points
-/// out of its cell (side 1 into side 2).
+/// Area-weighted normals and areas (global block, n_x, n_y, n_z, area) at
+/// the nodes of the facets tagged `tag` whose cell is owned here: each
+/// facet's normal points out of its cell (side 1 into side 2).
 std::vector<double>
 node_normals(const dolfinx::fem::FunctionSpace& V,
              const dolfinx::mesh::MeshTags<std::int32_t>& facet_tags, int tag)
@@ -82,7 +82,8 @@ node_normals(const dolfinx::fem::FunctionSpace& V,
     for (int k : layout.entity_closure_dofs(tdim - 1, local))
     {
       const auto g = global_block(*dofmap.index_map, cell_dofs[k]);
-      out.insert(out.end(), {static_cast<double>(g), n[0], n[1], n[2]});
+      out.insert(out.end(),
+                 {static_cast<double>(g), n[0], n[1], n[2], n.norm()});
     }
   }
   return out;
@@ -174,6 +175,7 @@ PairSet subset(const PairSet& set, const std::vector<std::size_t>& keep)
     out.block2.push_back(set.block2[i]);
     out.x.push_back(set.x[i]);
     out.frame.push_back(set.frame[i]);
+    out.area.push_back(set.area[i]);
     out.midside.push_back(set.midside[i]);
     std::array<int, 2> ends = set.edge_ends[i];
     for (int& e : ends)
@@ -212,8 +214,11 @@ Mat midside_prolongation(const dolfinx::fem::FunctionSpace& V,
 contact::PairLaw PairSet::law(std::size_t i) const
 {
   contact::PairLaw l;
-  l.mu = joints[joint[i]].mu;
-  l.keyed = joints[joint[i]].keyed;
+  const JointSpec& j = joints[joint[i]];
+  l.mu = j.mu;
+  l.keyed = j.keyed;
+  l.tension = j.tensile_strength * area[i];
+  l.cohesion = j.cohesion * area[i];
   return l;
 }
 
@@ -244,11 +249,13 @@ PairSet joint_pairs(const dolfinx::fem::FunctionSpace& V,
         edge_of[e[k]] = {e[k + 1], e[k + 2]};
     }
     std::map<std::int64_t, Vec3> normal;
-    for (std::size_t k = 0; k < normals.size(); k += 4)
+    std::map<std::int64_t, double> facet_area; // of the facets at a node
+    for (std::size_t k = 0; k < normals.size(); k += 5)
     {
-      auto [it, fresh] = normal.try_emplace(
-          static_cast<std::int64_t>(normals[k]), Vec3::Zero());
+      const auto block = static_cast<std::int64_t>(normals[k]);
+      auto [it, fresh] = normal.try_emplace(block, Vec3::Zero());
       it->second += Vec3(normals[k + 1], normals[k + 2], normals[k + 3]);
+      facet_area[block] += normals[k + 4];
     }
     // Side-1 nodes sorted by x for the coincidence search.
     const std::size_t n1 = side1.size() / 4;
@@ -338,6 +345,7 @@ PairSet joint_pairs(const dolfinx::fem::FunctionSpace& V,
       set.block2.push_back(p.b2);
       set.x.push_back(p.x);
       set.frame.push_back(frame_of(it->second));
+      set.area.push_back(facet_area[p.b1] / 3.0);
     }
   }
   return set;

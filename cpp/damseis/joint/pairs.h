@@ -26,6 +26,10 @@ struct JointSpec
   int tag_side2 = 0;  ///< the coincident facets of side 2
   double mu = 1.0;    ///< friction coefficient (the paper: 1.0)
   bool keyed = false; ///< shear keys: no sliding, opening free
+  /// A grouted (bonded) joint until it fails: tensile strength and
+  /// cohesion [Pa] (0: none, the paper's joints).
+  double tensile_strength = 0.0;
+  double cohesion = 0.0;
 };
 
 struct PairSet
@@ -39,12 +43,17 @@ struct PairSet
   /// side-1 facets at the node, area-weighted), t_a (the steepest-descent
   /// direction in the joint plane: vertical sliding), t_b = n x t_a.
   std::vector<Eigen::Matrix3d> frame;
+  /// The side-1 face area the pair stands for [m2]: a third of its facets'
+  /// areas (the lumped load of a uniform traction on P1 facets; with P2 the
+  /// same once the midside pairs follow the vertex pairs).
+  std::vector<double> area;
   /// Pairs at the midpoints of the faces' edges (P2): their edge's two end
   /// pairs (indices; -1 where the end is a single bonded node).
   std::vector<std::array<int, 2>> edge_ends;
   std::vector<bool> midside;
   std::size_t size() const { return joint.size(); }
-  /// The law of pair i (friction and keys of its joint).
+  /// The law of pair i (friction, keys and bond of its joint; the bond's
+  /// strengths times the pair's area).
   contact::PairLaw law(std::size_t i) const;
 };
 

@@ -1,4 +1,5 @@
 #include "static_contact.h"
+#include <algorithm>
 #include <cmath>
 #include <damseis/linalg/petsc_vectors.h>
 #include <sstream>
@@ -19,6 +20,11 @@ int relax(Mat M, double shift, Vec F, Vec u, const Solve& solve,
   Vector rhs = linalg::column_vector(M), u_old = linalg::column_vector(M);
   double change_old = 0.0;
   int slow = 0; // consecutive iterations that did not halve the change
+  // The size the round-off of an iterate scales with: the displacements
+  // in the solves, the start's among them (rhs = F + s M u_k), even when
+  // the load nearly cancels them.
+  double size = 0.0;
+  VecNorm(u, NORM_INFINITY, &size);
   for (int k = 1; k <= static_max_iterations; ++k)
   {
     VecCopy(u, u_old.vec());
@@ -34,9 +40,10 @@ int relax(Mat M, double shift, Vec F, Vec u, const Solve& solve,
                            "; try more joints.static_increments");
     }
     VecAXPY(u_old.vec(), -1.0, u);
-    double change = 0.0, size = 0.0;
+    double change = 0.0, size_k = 0.0;
     VecNorm(u_old.vec(), NORM_INFINITY, &change);
-    VecNorm(u, NORM_INFINITY, &size);
+    VecNorm(u, NORM_INFINITY, &size_k);
+    size = std::max(size, size_k);
     if (!std::isfinite(change))
       break;
     if (change <= static_tolerance * size)
@@ -124,6 +131,7 @@ StaticContactResult static_contact(Mat K, Mat M, double omega_1, Vec F_dead,
   r.w = c.relative_displacement();
   r.p = c.forces();
   r.states = c.states();
+  r.broken = c.broken();
   r.totals = c.totals();
   return r;
 }

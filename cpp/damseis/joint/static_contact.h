@@ -45,9 +45,10 @@ struct StaticContactResult
   dolfinx::la::petsc::Vector u{nullptr, false}; ///< the static displacement
   Eigen::VectorXd g0, w, p; ///< the pairs' gap reference, w and forces
   std::vector<contact::PairState> states;
-  ContactTotals totals; ///< the static solves' work
-  double shift = 0.0;   ///< s [1/s^2]
-  int iterations = 0;   ///< proximal-point iterations over all increments
+  std::vector<char> broken; ///< per pair: its bond failed (bonded joints)
+  ContactTotals totals;     ///< the static solves' work
+  double shift = 0.0;       ///< s [1/s^2]
+  int iterations = 0;       ///< proximal-point iterations over all increments
 };
 
 /// K u = F + G p with the contact of `pairs`: F_dead first (one increment),
