@@ -95,12 +95,16 @@ def main():
         picture(r, "sigma1_MPa", "CELLS", "sigma1 [MPa], deformed",
                 os.path.join(out, "paraview_fields.png"), "displacement_m",
                 warp_scale(r, "displacement_m"))
-    envelopes = os.path.join(out, "envelopes.xdmf")
-    if os.path.exists(envelopes):
-        r = Xdmf3ReaderS(FileName=[envelopes])
-        picture(r, "max_principal_MPa", "CELLS",
-                "envelope of sigma1 [MPa]",
-                os.path.join(out, "paraview_envelopes.png"))
+    # Single-grid files: file, field, its association, title, picture.
+    for name, field, association, title, png in (
+            ("envelopes.xdmf", "max_principal_MPa", "CELLS",
+             "envelope of sigma1 [MPa]", "paraview_envelopes.png"),
+            ("joint_envelope.xdmf", "max_opening_cm", "POINTS",
+             "largest joint opening [cm]", "paraview_joints.png")):
+        path = os.path.join(out, name)
+        if os.path.exists(path):
+            picture(Xdmf3ReaderS(FileName=[path]), field, association, title,
+                    os.path.join(out, png))
     modes = os.path.join(out, "modes.xdmf")
     if os.path.exists(modes):
         r = Xdmf3ReaderS(FileName=[modes])
@@ -110,12 +114,6 @@ def main():
             picture(r, names[0], "POINTS", names[0],
                     os.path.join(out, "paraview_modes.png"), names[0],
                     warp_scale(r, names[0]))
-    joints = os.path.join(out, "joint_envelope.xdmf")
-    if os.path.exists(joints):
-        r = Xdmf3ReaderS(FileName=[joints])
-        picture(r, "max_opening_cm", "POINTS",
-                "largest joint opening [cm]",
-                os.path.join(out, "paraview_joints.png"))
     return 0
 
 

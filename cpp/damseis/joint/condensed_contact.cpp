@@ -100,6 +100,20 @@ Eigen::VectorXd symmetric_product(const Eigen::MatrixXd& A,
   dsymv_("L", &n, &alpha, A.data(), &n, x.data(), &one, &beta, y.data(), &one);
   return y;
 }
+/// The position of node `block`'s first unknown in `unknowns`, where its
+/// 3 unknowns are appended when first seen (`position` remembers them).
+int place(std::int64_t block, std::map<std::int64_t, int>& position,
+          std::vector<PetscInt>& unknowns)
+{
+  auto [it, fresh] =
+      position.try_emplace(block, static_cast<int>(unknowns.size()));
+  if (fresh)
+  {
+    for (int k = 0; k < 3; ++k)
+      unknowns.push_back(static_cast<PetscInt>(3 * block + k));
+  }
+  return it->second;
+}
 } // namespace
 
 CondensedContact::CondensedContact(PairSet pairs, contact::NcpSettings ncp)
@@ -107,21 +121,10 @@ CondensedContact::CondensedContact(PairSet pairs, contact::NcpSettings ncp)
 {
   const std::size_t n = _pairs.size();
   std::map<std::int64_t, int> position;
-  auto place = [&](std::int64_t block)
-  {
-    auto [it, fresh] =
-        position.try_emplace(block, static_cast<int>(_unknowns.size()));
-    if (fresh)
-    {
-      for (int k = 0; k < 3; ++k)
-        _unknowns.push_back(static_cast<PetscInt>(3 * block + k));
-    }
-    return it->second;
-  };
   for (std::size_t i = 0; i < n; ++i)
   {
-    _pos1.push_back(place(_pairs.block1[i]));
-    _pos2.push_back(place(_pairs.block2[i]));
+    _pos1.push_back(place(_pairs.block1[i], position, _unknowns));
+    _pos2.push_back(place(_pairs.block2[i], position, _unknowns));
   }
   _p = _w = Eigen::VectorXd::Zero(3 * n);
   _g0 = Eigen::VectorXd::Zero(n);
@@ -188,25 +191,15 @@ void CondensedContact::choose_schur_unknowns(Mat K)
   // its side-2 node's unknowns), both nodes of the others.
   std::vector<char> relative(n);
   std::map<std::int64_t, int> position;
-  auto place = [&](std::int64_t block)
-  {
-    auto [it, fresh] =
-        position.try_emplace(block, static_cast<int>(_schur_unknowns.size()));
-    if (fresh)
-    {
-      for (int k = 0; k < 3; ++k)
-        _schur_unknowns.push_back(static_cast<PetscInt>(3 * block + k));
-    }
-    return it->second;
-  };
   _all_relative = n > 0;
   for (std::size_t i = 0; i < n; ++i)
   {
     relative[i] = uses[_pairs.block1[i]] == 1 && uses[_pairs.block2[i]] == 1 &&
                   !fixed[2 * i] && !fixed[2 * i + 1];
     _all_relative = _all_relative && relative[i];
-    _slot1.push_back(relative[i] ? -1 : place(_pairs.block1[i]));
-    _slot2.push_back(place(_pairs.block2[i]));
+    _slot1.push_back(
+        relative[i] ? -1 : place(_pairs.block1[i], position, _schur_unknowns));
+    _slot2.push_back(place(_pairs.block2[i], position, _schur_unknowns));
   }
   if (std::none_of(relative.begin(), relative.end(),
                    [](char r) { return r != 0; }))
