@@ -1,5 +1,6 @@
 #include "joint_contact_keys.h"
 #include <algorithm>
+#include <utility>
 
 namespace damseis::analysis
 {
@@ -83,7 +84,9 @@ JointBonds read_joint_bonds(const input::Case& c, std::size_t joints,
                             const std::string& order)
 {
   JointBonds b;
-  for (const char* key : {"joints.tensile_strength", "joints.cohesion"})
+  for (auto [key, out] :
+       {std::pair{"joints.tensile_strength", &b.tensile_strength},
+        std::pair{"joints.cohesion", &b.cohesion}})
   {
     std::vector<double> v = c.reals(key);
     if (!v.empty() && v.size() != joints)
@@ -98,8 +101,7 @@ JointBonds read_joint_bonds(const input::Case& c, std::size_t joints,
     if (bonded && c.string("joints.formulation") == "paper")
       c.fail(key, "is given with joints.formulation = \"paper\"",
              "joints.formulation = \"alart_curnier\" for bonded joints");
-    (std::string(key) == "joints.cohesion" ? b.cohesion : b.tensile_strength) =
-        std::move(v);
+    *out = std::move(v);
   }
   return b;
 }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <damseis/geometry/coincident_points.h>
 #include <damseis/geometry/tagged.h>
 #include <damseis/linalg/all_gather.h>
 #include <dolfinx/common/IndexMap.h>
@@ -62,29 +63,22 @@ Mat tie_prolongation(const dolfinx::fem::FunctionSpace& V,
                   });
   }
 
-  // Match each slave to the coincident master (sorted by x for lookup).
-  std::vector<std::size_t> order(n_masters);
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(),
-            [&](std::size_t a, std::size_t b)
-            { return masters[4 * a] < masters[4 * b]; });
+  // Match each slave to the coincident master.
+  const geometry::CoincidentPoints master_points(
+      n_masters,
+      [&](std::size_t m)
+      {
+        return std::array<double, 3>{masters[4 * m], masters[4 * m + 1],
+                                     masters[4 * m + 2]};
+      },
+      tol);
   std::vector<std::int64_t> slave_master(slaves.size(), -1);
   for (std::size_t i = 0; i < slaves.size(); ++i)
   {
     const double* p = &x[3 * slaves[i]];
-    auto lo = std::lower_bound(order.begin(), order.end(), p[0] - tol,
-                               [&](std::size_t m, double v)
-                               { return masters[4 * m] < v; });
-    for (auto it = lo; it != order.end() && masters[4 * *it] <= p[0] + tol;
-         ++it)
-    {
-      const double* q = &masters[4 * *it];
-      if (std::hypot(q[0] - p[0], q[1] - p[1], q[2] - p[2]) <= tol)
-      {
-        slave_master[i] = static_cast<std::int64_t>(q[3]);
-        break;
-      }
-    }
+    const std::int64_t m = master_points.find(p);
+    if (m >= 0)
+      slave_master[i] = static_cast<std::int64_t>(masters[4 * m + 3]);
     if (slave_master[i] < 0)
     {
       throw std::runtime_error(

@@ -1,8 +1,8 @@
 #include "joint_surfaces.h"
 #include <algorithm>
 #include <cmath>
+#include <damseis/geometry/coincident_points.h>
 #include <dolfinx/mesh/Mesh.h>
-#include <numeric>
 #include <stdexcept>
 
 namespace damseis::joint
@@ -38,28 +38,11 @@ side2_facets(const dolfinx::mesh::Mesh& mesh,
 std::vector<std::int32_t> pairs_at(std::span<const double> x,
                                    const PairSet& pairs, double tol)
 {
-  std::vector<std::size_t> by_x(pairs.size());
-  std::iota(by_x.begin(), by_x.end(), 0);
-  std::sort(by_x.begin(), by_x.end(),
-            [&](std::size_t a, std::size_t b)
-            { return pairs.x[a][0] < pairs.x[b][0]; });
-  std::vector<std::int32_t> out(x.size() / 3, -1);
+  const geometry::CoincidentPoints pair_points(
+      pairs.size(), [&](std::size_t i) { return pairs.x[i]; }, tol);
+  std::vector<std::int32_t> out(x.size() / 3);
   for (std::size_t node = 0; node < out.size(); ++node)
-  {
-    const double* p = x.data() + 3 * node;
-    auto it = std::lower_bound(by_x.begin(), by_x.end(), p[0] - tol,
-                               [&](std::size_t i, double v)
-                               { return pairs.x[i][0] < v; });
-    for (; it != by_x.end() && pairs.x[*it][0] <= p[0] + tol; ++it)
-    {
-      const auto& q = pairs.x[*it];
-      if (std::hypot(q[0] - p[0], q[1] - p[1], q[2] - p[2]) <= tol)
-      {
-        out[node] = static_cast<std::int32_t>(*it);
-        break;
-      }
-    }
-  }
+    out[node] = static_cast<std::int32_t>(pair_points.find(&x[3 * node]));
   return out;
 }
 } // namespace

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <damseis/fem/facet_dofs.h>
 #include <damseis/fem/prolongation.h>
+#include <damseis/geometry/coincident_points.h>
 #include <damseis/geometry/facet_normal.h>
 #include <damseis/geometry/tagged.h>
 #include <damseis/linalg/all_gather.h>
@@ -257,13 +258,16 @@ PairSet joint_pairs(const dolfinx::fem::FunctionSpace& V,
       it->second += Vec3(normals[k + 1], normals[k + 2], normals[k + 3]);
       facet_area[block] += normals[k + 4];
     }
-    // Side-1 nodes sorted by x for the coincidence search.
+    // Side-1 nodes for the coincidence search.
     const std::size_t n1 = side1.size() / 4;
-    std::vector<std::size_t> order(n1);
-    std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(),
-              [&](std::size_t a, std::size_t b)
-              { return side1[4 * a + 1] < side1[4 * b + 1]; });
+    const geometry::CoincidentPoints side1_points(
+        n1,
+        [&](std::size_t m)
+        {
+          return std::array<double, 3>{side1[4 * m + 1], side1[4 * m + 2],
+                                       side1[4 * m + 3]};
+        },
+        tol);
     std::vector<std::int64_t> on_side1(n1);
     for (std::size_t m = 0; m < n1; ++m)
       on_side1[m] = static_cast<std::int64_t>(side1[4 * m]);
@@ -281,20 +285,9 @@ PairSet joint_pairs(const dolfinx::fem::FunctionSpace& V,
       if (std::binary_search(on_side1.begin(), on_side1.end(), b2))
         continue; // one node: bonded where the joint meets other material
       const double* p = &side2[k + 1];
-      auto lo = std::lower_bound(order.begin(), order.end(), p[0] - tol,
-                                 [&](std::size_t m, double v)
-                                 { return side1[4 * m + 1] < v; });
-      std::int64_t b1 = -1;
-      for (auto it = lo; it != order.end() && side1[4 * *it + 1] <= p[0] + tol;
-           ++it)
-      {
-        const double* q = &side1[4 * *it + 1];
-        if (std::hypot(q[0] - p[0], q[1] - p[1], q[2] - p[2]) <= tol)
-        {
-          b1 = static_cast<std::int64_t>(side1[4 * *it]);
-          break;
-        }
-      }
+      const std::int64_t m = side1_points.find(p);
+      const std::int64_t b1 =
+          m < 0 ? -1 : static_cast<std::int64_t>(side1[4 * m]);
       if (b1 < 0)
       {
         throw std::runtime_error(
