@@ -1,5 +1,6 @@
 # Loads on a group of the user's mesh (dam_model): a traction on a group of
-# facets and a body force on a group of cells. Compiled per displacement
+# facets (exterior; the interior form serves the means over facet groups)
+# and a body force on a group of cells. Compiled per displacement
 # degree like elasticity_3d.py.
 #
 # Constants (SI): value_x, value_y, value_z: the components of the
@@ -7,7 +8,7 @@
 # Subdomain: the group's facets or cells carry the value LOADED = 1 in the
 # tags the assembly passes (fem::ElasticModel::assemble_group_load).
 from ufl import (Constant, FunctionSpace, Mesh, TestFunction, VectorElement,
-                 as_vector, ds, dx, inner, tetrahedron)
+                 as_vector, dS, ds, dx, inner, tetrahedron)
 
 LOADED = 1
 
@@ -22,5 +23,7 @@ value = as_vector([value_x, value_y, value_z])
 
 L_traction = inner(value, v) * ds(LOADED)
 L_body_force = inner(value, v) * dx(LOADED)
+# On interior facets (v is continuous: either side's trace).
+L_traction_interior = inner(value, v("+")) * dS(LOADED)
 
-forms = [L_traction, L_body_force]
+forms = [L_traction, L_body_force, L_traction_interior]

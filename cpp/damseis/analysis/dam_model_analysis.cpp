@@ -66,8 +66,12 @@ ModelLoads DamModel::loads(const DamModelConfig& cfg) const
   ModelLoads l;
   for (const auto& b : body_forces)
     l.static_loads.push_back(b.vec());
+  // "static" tractions act before t = 0 and stay: a static load.
   for (const auto& t : tractions)
-    l.timed.push_back({t.vec(), cfg.traction_history});
+    if (cfg.traction_history_kind == "static")
+      l.static_loads.push_back(t.vec());
+    else
+      l.timed.push_back({t.vec(), cfg.traction_history});
   l.initial_velocity = initial_velocity.vec();
   return l;
 }

@@ -370,8 +370,9 @@ input::Schema dam_model_schema()
                "loads.traction_history");
   s.string("loads.traction_history", "step", "-",
            "\"step\" (1 from the first step on), \"pulse\" (half sine of "
-           "loads.pulse_duration) or a file of (time, factor) rows starting "
-           "at 0");
+           "loads.pulse_duration), \"static\" (a static load: applied in the "
+           "static stage with the dead weight, kept through the time "
+           "history) or a file of (time, factor) rows starting at 0");
   s.real("loads.pulse_duration", "0.1", "s", "duration of the pulse").above(0);
   s.string_array("loads.body_force_groups", "[]", "-",
                  "cell groups with a static body force besides dead weight");
@@ -756,7 +757,7 @@ void read_dam_seismic(const input::Case& c, DamModelConfig& cfg)
     }
   }
   cfg.traction_history_kind = c.string("loads.traction_history");
-  if (!cfg.tractions.empty())
+  if (!cfg.tractions.empty() && cfg.traction_history_kind != "static")
     cfg.traction_history =
         load_history(c, cfg.seismic.steps, cfg.seismic.scheme.dt);
 }

@@ -74,7 +74,7 @@ struct DamModelConfig
   JointContactConfig contact;
   std::vector<GroupVector> tractions;   ///< times traction_history
   std::vector<double> traction_history; ///< per step, starting at 0
-  std::string traction_history_kind;    ///< "step", "pulse" or a file
+  std::string traction_history_kind;    ///< "step", "pulse", "static" or a file
   std::vector<GroupVector> body_forces; ///< static, with the dead weight
   std::vector<GroupVector> initial_velocity;
   /// Facet groups whose stress envelopes are tabulated (face_<group>.csv).

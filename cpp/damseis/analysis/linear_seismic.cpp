@@ -352,7 +352,7 @@ void LinearSeismicAnalysis::add_recorders(engine::TimeHistory& history)
   // (With contact the state is total: the static displacement is taken off
   // so that the histories are the seismic ones, as in every analysis.)
   _named = std::make_unique<NamedHistories>(
-      _comm, *_fe.V(), _s, *_stepper, *_u, *_stresses,
+      _comm, _fe, _s, *_stepper, *_u, *_stresses,
       _contact ? _u_static_full.vec() : nullptr);
   for (engine::Observer* o : std::initializer_list<engine::Observer*>{
            _u.get(), _stresses.get(), _points.get()})

@@ -571,7 +571,7 @@ void ConcreteSeismicAnalysis::add_recorders(engine::TimeHistory& history)
           [this]() -> std::vector<std::span<const double>> {
             return {_cm.kappa_t(), _cm.kappa_c(), _cm.strain_rate()};
           }});
-  _named = std::make_unique<NamedHistories>(_comm, *_fe.V(), _s, *_stepper, *_u,
+  _named = std::make_unique<NamedHistories>(_comm, _fe, _s, *_stepper, *_u,
                                             *_stresses, _u_static_full.vec());
   for (engine::Observer* o : std::initializer_list<engine::Observer*>{
            _u.get(), _stresses.get(), _concrete_state.get(), _points.get(),

@@ -1,5 +1,6 @@
 #include "recorders.h"
 #include <damseis/engine/checkpoint.h>
+#include <damseis/fem/group_loads.h>
 #include <damseis/geometry/tagged.h>
 #include <damseis/linalg/petsc_vectors.h>
 #include <dolfinx/fem/utils.h>
@@ -354,52 +355,59 @@ nlohmann::json PointStresses::write_csv(MPI_Comm comm, double dt,
 }
 
 GroupStates::GroupStates(
-    const dolfinx::fem::FunctionSpace& V,
+    const fem::ElasticModel& fe,
     const std::vector<SeismicSettings::HistoryGroup>& groups, int steps,
     const engine::Stepper& stepper, const FullDisplacement& full,
     std::function<double(int, int)> ground, Vec static_u)
-    : _dim(V.dofmap()->index_map_bs()), _comm(V.mesh()->comm()),
+    : _dim(fe.V()->dofmap()->index_map_bs()), _comm(fe.mesh()->comm()),
       _stepper(stepper), _full(full), _ground(std::move(ground))
 {
-  const std::int32_t owned = V.dofmap()->index_map->size_local();
-  for (const auto& g : groups)
+  const std::size_t owned =
+      static_cast<std::size_t>(fe.V()->dofmap()->index_map->size_local()) *
+      _dim;
+  _total.assign(groups.size() * _dim, 0.0);
+  for (std::size_t g = 0; g < groups.size(); ++g)
   {
-    const auto entities = geometry::tagged_entities(*g.tags, {g.tag});
-    auto blocks =
-        dolfinx::fem::locate_dofs_topological(V, g.tags->dim(), entities, true);
-    std::erase_if(blocks, [owned](std::int32_t b) { return b >= owned; });
-    _names.push_back(g.name);
-    _blocks.push_back(std::move(blocks));
+    const auto entities =
+        geometry::tagged_entities(*groups[g].tags, {groups[g].tag});
+    dolfinx::la::petsc::Vector w(
+        fem::group_weights(fe, groups[g].tags->dim(), entities), false);
+    const double* a = nullptr;
+    VecGetArrayRead(w.vec(), &a);
+    _weights.emplace_back(a, a + owned);
+    VecRestoreArrayRead(w.vec(), &a);
+    for (std::size_t i = 0; i < owned; ++i)
+      _total[g * _dim + i % _dim] += _weights[g][i];
+    _names.push_back(groups[g].name);
   }
-  _count.resize(_blocks.size());
-  for (std::size_t i = 0; i < _blocks.size(); ++i)
-    _count[i] = static_cast<double>(_blocks[i].size());
-  MPI_Allreduce(MPI_IN_PLACE, _count.data(), static_cast<int>(_count.size()),
+  MPI_Allreduce(MPI_IN_PLACE, _total.data(), static_cast<int>(_total.size()),
                 MPI_DOUBLE, MPI_SUM, _comm);
-  _static.assign(_blocks.size() * _dim, 0.0);
+  _static.assign(_weights.size() * _dim, 0.0);
   if (static_u)
   {
     local_sums(static_u, _static);
     MPI_Allreduce(MPI_IN_PLACE, _static.data(),
                   static_cast<int>(_static.size()), MPI_DOUBLE, MPI_SUM, _comm);
   }
-  _hist.assign((steps + 1) * _blocks.size() * 4 * _dim, 0.0);
+  _hist.assign((steps + 1) * _weights.size() * 4 * _dim, 0.0);
 }
 
 void GroupStates::local_sums(Vec x, std::vector<double>& out) const
 {
   const double* a = nullptr;
   VecGetArrayRead(x, &a);
-  for (std::size_t g = 0; g < _blocks.size(); ++g)
-    for (std::int32_t b : _blocks[g])
-      for (int c = 0; c < _dim; ++c)
-        out[g * _dim + c] += a[b * _dim + c];
+  for (std::size_t g = 0; g < _weights.size(); ++g)
+  {
+    const std::vector<double>& w = _weights[g];
+    for (std::size_t i = 0; i < w.size(); ++i)
+      out[g * _dim + i % _dim] += w[i] * a[i];
+  }
   VecRestoreArrayRead(x, &a);
 }
 
 void GroupStates::record(int k, double)
 {
-  const std::size_t n = _blocks.size();
+  const std::size_t n = _weights.size();
   if (n == 0)
     return;
   // u, v, a summed over the groups' owned nodes, one reduction.
@@ -416,9 +424,10 @@ void GroupStates::record(int k, double)
   for (std::size_t g = 0; g < n; ++g)
   {
     double* row = &_hist[((k * n + g) * 4) * _dim];
-    const double w = _count[g] > 0 ? 1.0 / _count[g] : 0.0;
     for (int c = 0; c < _dim; ++c)
     {
+      const double total = _total[g * _dim + c];
+      const double w = total != 0.0 ? 1.0 / total : 0.0;
       row[c] = w * (sums[g * _dim + c] - _static[g * _dim + c]);
       row[_dim + c] = w * sums[(n + g) * _dim + c];
       row[2 * _dim + c] = w * sums[(2 * n + g) * _dim + c];
@@ -429,13 +438,13 @@ void GroupStates::record(int k, double)
 
 void GroupStates::save(engine::Arrays& arrays) const
 {
-  if (!_blocks.empty())
+  if (!_weights.empty())
     arrays["group_states"] = _hist;
 }
 
 void GroupStates::restore(const engine::CheckpointData& d)
 {
-  if (!_blocks.empty())
+  if (!_weights.empty())
     _hist = engine::checkpoint_array(d, "group_states", _hist.size());
 }
 
@@ -443,12 +452,13 @@ nlohmann::json GroupStates::write_csv(MPI_Comm comm, double dt,
                                       const std::filesystem::path& file) const
 {
   nlohmann::json peaks = nlohmann::json::object();
-  if (_blocks.empty())
+  if (_weights.empty())
     return peaks;
-  const auto peak = state_peaks(_hist, _blocks.size(), _dim);
-  for (std::size_t g = 0; g < _blocks.size(); ++g)
+  const auto peak = state_peaks(_hist, _weights.size(), _dim);
+  for (std::size_t g = 0; g < _weights.size(); ++g)
     peaks[_names[g]] = {
-        {"nodes", _count[g]},
+        // m3 for cells, m2 for facets (2D: per metre of thickness)
+        {"volume_or_area", _total[g * _dim]},
         {"max_mean_displacement_m", peak[g][0]},
         {"max_mean_velocity_m_per_s", peak[g][1]},
         {"max_mean_acceleration_m_per_s2", peak[g][2]},
@@ -457,20 +467,19 @@ nlohmann::json GroupStates::write_csv(MPI_Comm comm, double dt,
   return peaks;
 }
 
-NamedHistories::NamedHistories(MPI_Comm comm,
-                               const dolfinx::fem::FunctionSpace& V,
+NamedHistories::NamedHistories(MPI_Comm comm, const fem::ElasticModel& fe,
                                const SeismicSettings& s,
                                const engine::Stepper& stepper,
                                const FullDisplacement& full,
                                const StressRecorder& stresses, Vec static_u)
     : _s(s),
       _points(
-          V, s.history_points, s.steps, stepper, full,
+          *fe.V(), s.history_points, s.steps, stepper, full,
           [&s](int k, int c)
           { return s.motion[c].active ? s.motion[c].acceleration[k] : 0.0; },
           static_u),
       _groups(
-          V, s.history_groups, s.steps, stepper, full,
+          fe, s.history_groups, s.steps, stepper, full,
           [&s](int k, int c)
           { return s.motion[c].active ? s.motion[c].acceleration[k] : 0.0; },
           static_u),

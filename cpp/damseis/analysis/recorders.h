@@ -151,12 +151,14 @@ private:
 
 /// Displacement, velocity and acceleration (relative to the supports,
 /// static part taken off where the state is total) and the absolute
-/// acceleration, averaged over the nodes of named groups of cells or
-/// facets, per step (the same on every rank: one reduction per step).
+/// acceleration, averaged over the volume or area of named groups of
+/// cells or facets (fem::group_weights: for a uniform density a cell
+/// group's mean velocity is its momentum over its mass), per step (the
+/// same on every rank: one reduction per step).
 class GroupStates : public engine::Observer
 {
 public:
-  GroupStates(const dolfinx::fem::FunctionSpace& V,
+  GroupStates(const fem::ElasticModel& fe,
               const std::vector<SeismicSettings::HistoryGroup>& groups,
               int steps, const engine::Stepper& stepper,
               const FullDisplacement& full,
@@ -169,12 +171,13 @@ public:
                            const std::filesystem::path& file) const;
 
 private:
-  /// Per group: sum of the components of x over the group's owned
-  /// nodes, into `out` (dim values per group).
+  /// Per group: the weighted sums of the components of x over the owned
+  /// dofs, added into `out` (dim values per group).
   void local_sums(Vec x, std::vector<double>& out) const;
   std::vector<std::string> _names;
-  std::vector<std::vector<std::int32_t>> _blocks; ///< owned nodes per group
-  std::vector<double> _count;                     ///< nodes per group (all)
+  /// Per group: the weights of its owned dofs (0 outside it).
+  std::vector<std::vector<double>> _weights;
+  std::vector<double> _total; ///< per group, component: sum of the weights
   int _dim;
   MPI_Comm _comm;
   const engine::Stepper& _stepper;
@@ -193,7 +196,7 @@ class NamedHistories
 public:
   /// `static_u` (full space, may be null): the static displacement, taken
   /// off where the state is total.
-  NamedHistories(MPI_Comm comm, const dolfinx::fem::FunctionSpace& V,
+  NamedHistories(MPI_Comm comm, const fem::ElasticModel& fe,
                  const SeismicSettings& s, const engine::Stepper& stepper,
                  const FullDisplacement& full, const StressRecorder& stresses,
                  Vec static_u);

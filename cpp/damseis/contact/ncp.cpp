@@ -254,7 +254,8 @@ NcpReport newton(const ContactProblem& c, const Eigen::VectorXd& p0,
       psi = 0.5 * F.squaredNorm();
       rep.residual = F.norm() / scale;
     }
-    if (rep.residual <= s.tol)
+    const bool polishing = rep.residual <= s.tol;
+    if (polishing && rep.iterations >= s.min_iterations)
     {
       rep.converged = true;
       break;
@@ -308,6 +309,12 @@ NcpReport newton(const ContactProblem& c, const Eigen::VectorXd& p0,
     };
     if (search(d, dw))
       w_afresh = false;
+    else if (polishing)
+    {
+      // Within tol already, and round-off allows no further descent.
+      rep.converged = true;
+      break;
+    }
     else
     {
       ++rep.gradient_steps;

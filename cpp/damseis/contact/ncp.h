@@ -38,6 +38,11 @@ struct NcpSettings
 {
   double tol = 1e-10;      ///< |F| <= tol * force scale
   int max_iterations = 50; ///< Newton iterations
+  /// Newton iterations taken even when the start meets tol (a start
+  /// within tol is then polished to round-off): where the force scale
+  /// overstates the forces, tol alone leaves displacement errors that
+  /// accumulate (the static stage's proximal iteration).
+  int min_iterations = 0;
   Formulation formulation = Formulation::alart_curnier;
 };
 

@@ -244,17 +244,19 @@ Vec ElasticModel::assemble_load_form(
 
 Vec ElasticModel::assemble_group_load(
     const ufcx_form& form, const std::map<std::string, double>& values,
-    const dolfinx::mesh::MeshTags<std::int32_t>& group) const
+    const dolfinx::mesh::MeshTags<std::int32_t>& group, bool interior,
+    bool apply_bc) const
 {
   std::map<std::string, std::shared_ptr<const dfem::Constant<double>>> c;
   for (const auto& [name, value] : values)
     c[name] = std::make_shared<const dfem::Constant<double>>(value);
   const auto type = group.dim() == _model.mesh->topology().dim()
                         ? dfem::IntegralType::cell
-                        : dfem::IntegralType::exterior_facet;
+                    : interior ? dfem::IntegralType::interior_facet
+                               : dfem::IntegralType::exterior_facet;
   auto L = dfem::create_form<double>(form, {_V}, {}, c, {{type, &group}},
                                      _model.mesh);
-  return assemble_load(L, true);
+  return assemble_load(L, apply_bc);
 }
 
 Vec ElasticModel::assemble_internal_force(const Function& u) const

@@ -112,12 +112,13 @@ public:
       const std::map<std::string, std::shared_ptr<const Function>>&
           coefficients = {}) const;
   /// A load of a compiled linear form whose integrals run over subdomain 1
-  /// (cells or exterior facets, by the dimension of `group`), the entities
-  /// `group` gives value 1 (e.g. forms/group_loads_2d.py); zero at fixed
-  /// dofs.
-  Vec assemble_group_load(
-      const ufcx_form& form, const std::map<std::string, double>& constants,
-      const dolfinx::mesh::MeshTags<std::int32_t>& group) const;
+  /// (cells, or exterior facets, or with `interior` interior facets, by the
+  /// dimension of `group`), the entities `group` gives value 1 (e.g.
+  /// forms/group_loads_2d.py); zero at fixed dofs if `apply_bc`.
+  Vec assemble_group_load(const ufcx_form& form,
+                          const std::map<std::string, double>& constants,
+                          const dolfinx::mesh::MeshTags<std::int32_t>& group,
+                          bool interior = false, bool apply_bc = true) const;
   /// Internal force f_int(u) = K u without boundary conditions (used for
   /// reactions and residual checks).
   Vec assemble_internal_force(const Function& u) const;
