@@ -54,6 +54,8 @@ expect dm_bond_count 'joints\.tensile_strength: has 2 values for 1 joints' --cas
 expect dm_bond_negative 'joints\.cohesion=\[-1\] is out of range; expected 0 <= cohesion' --case "$block" --set joints.model=contact --set 'joints.cohesion=[-1]'
 expect dm_bond_paper 'joints\.tensile_strength: is given with joints\.formulation = "paper"' --case "$block" --set joints.model=contact --set 'joints.tensile_strength=[1e5]' --set joints.formulation=paper
 expect dm_bond_bonded 'joints\.cohesion: is given while joints\.model = "bonded"' --case "$block" --set 'joints.cohesion=[1e5]'
+expect dm_gap_negative 'joints\.initial_gap=\[-0\.001\] is out of range; expected 0 <= initial_gap' --case "$block" --set joints.model=contact --set 'joints.initial_gap=[-0.001]'
+expect dm_gap_bonded_joint 'joints\.initial_gap: opens joint 1 \(joints\.side1 order\), which has a bond' --case "$block" --set joints.model=contact --set 'joints.initial_gap=[0.001]' --set 'joints.tensile_strength=[1e5]'
 
 if [ "$failures" -ne 0 ]; then
   echo "$failures bad-input checks failed"; exit 1

@@ -52,7 +52,8 @@ ArchDamModel arch_dam_model(MPI_Comm comm, const ArchDamConfig& cfg)
                           cfg.friction.at(j.label),
                           cfg.keyed.find(j.label) != std::string::npos,
                           cfg.bonds.at(j.label).first,
-                          cfg.bonds.at(j.label).second});
+                          cfg.bonds.at(j.label).second,
+                          cfg.initial_gap.at(j.label)});
     c.facet_tags = arch.model.facet_tags.get();
     c.restitution = cfg.restitution;
     c.statics = cfg.statics;

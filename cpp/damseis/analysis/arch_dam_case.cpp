@@ -90,12 +90,13 @@ void read_joint_contact(const input::Case& c, ArchDamConfig& a)
            "has " + std::to_string(friction.size()) + " values for " +
                std::to_string(labels.size()) + " joints (" + labels + ")",
            "one coefficient per joint in label order, or [] for 1.0");
-  const JointBonds bonds =
-      read_joint_bonds(c, labels.size(), "label order " + labels);
+  const JointConditions joint =
+      read_joint_conditions(c, labels.size(), "label order " + labels);
   for (std::size_t i = 0; i < labels.size(); ++i)
   {
     a.friction[labels[i]] = friction.empty() ? 1.0 : friction[i];
-    a.bonds[labels[i]] = {bonds.tensile_strength[i], bonds.cohesion[i]};
+    a.bonds[labels[i]] = {joint.tensile_strength[i], joint.cohesion[i]};
+    a.initial_gap[labels[i]] = joint.initial_gap[i];
   }
   a.keyed = c.string("joints.keyed");
   for (char k : a.keyed)

@@ -33,6 +33,7 @@ struct ArchDamConfig
   std::string keyed; ///< labels of the keyed joints
   /// Bonds per joint label: tensile strength and cohesion [Pa].
   std::map<char, std::pair<double, double>> bonds;
+  std::map<char, double> initial_gap; ///< [m] per joint
   double restitution = 1.0;
   joint::StaticContactSettings statics;
   std::vector<std::array<double, 3>> history_points;

@@ -119,11 +119,11 @@ DamModel dam_model(MPI_Comm comm, const DamModelConfig& cfg)
     for (std::size_t j = 0; j < cfg.joints.size(); ++j)
     {
       const auto& [side1, side2] = cfg.joints[j];
-      c.joints.push_back({side1, cfg.mesh->groups.at(side1).tag,
-                          cfg.mesh->groups.at(side2).tag,
-                          cfg.contact.friction[j], cfg.contact.keyed[j],
-                          cfg.contact.bonds.tensile_strength[j],
-                          cfg.contact.bonds.cohesion[j]});
+      c.joints.push_back(
+          {side1, cfg.mesh->groups.at(side1).tag,
+           cfg.mesh->groups.at(side2).tag, cfg.contact.friction[j],
+           cfg.contact.keyed[j], cfg.contact.joint.tensile_strength[j],
+           cfg.contact.joint.cohesion[j], cfg.contact.joint.initial_gap[j]});
     }
     c.facet_tags = cfg.group_facets.get();
     c.restitution = cfg.contact.restitution;

@@ -629,7 +629,7 @@ void read_joint_contact(const input::Case& c, DamModelConfig& cfg)
              "side1 groups of joints.side1");
     jc.keyed[static_cast<std::size_t>(it - cfg.joints.begin())] = true;
   }
-  jc.bonds = read_joint_bonds(c, cfg.joints.size(), "joints.side1 order");
+  jc.joint = read_joint_conditions(c, cfg.joints.size(), "joints.side1 order");
   jc.restitution = read_restitution(c);
   jc.statics = read_joint_statics(c);
   jc.history_points = read_joint_history_points(c);

@@ -44,7 +44,7 @@ struct JointContactConfig
   bool enabled = false;
   std::vector<double> friction; ///< per joint
   std::vector<bool> keyed;      ///< per joint
-  JointBonds bonds;             ///< per joint
+  JointConditions joint;        ///< bonds and gaps per joint
   double restitution = 1.0;
   joint::StaticContactSettings statics;
   std::vector<std::array<double, 3>> history_points;

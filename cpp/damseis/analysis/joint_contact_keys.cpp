@@ -36,6 +36,11 @@ void add_joint_contact_keys(input::Schema& s,
                "cohesion + friction x compression until the bond fails), in "
                "the order of the joints' friction ([]: 0 each)")
       .between(0, 1e8);
+  s.real_array("joints.initial_gap", "[]", "m",
+               "contact: each joint's opening at the start (ungrouted "
+               "joints: the shrinkage gap the faces close before they touch), "
+               "in the order of the joints' friction ([]: 0 each, closed)")
+      .between(0, 1);
   s.real_array("joints.history_points", "[]", "m",
                "contact: points (x, y, z each) whose nearest pairs' opening "
                "and sliding are recorded per step (joint_histories.csv); "
@@ -80,13 +85,14 @@ read_joint_history_points(const input::Case& c)
   return points;
 }
 
-JointBonds read_joint_bonds(const input::Case& c, std::size_t joints,
-                            const std::string& order)
+JointConditions read_joint_conditions(const input::Case& c, std::size_t joints,
+                                      const std::string& order)
 {
-  JointBonds b;
+  JointConditions b;
   for (auto [key, out] :
        {std::pair{"joints.tensile_strength", &b.tensile_strength},
-        std::pair{"joints.cohesion", &b.cohesion}})
+        std::pair{"joints.cohesion", &b.cohesion},
+        std::pair{"joints.initial_gap", &b.initial_gap}})
   {
     std::vector<double> v = c.reals(key);
     if (!v.empty() && v.size() != joints)
@@ -98,10 +104,21 @@ JointBonds read_joint_bonds(const input::Case& c, std::size_t joints,
       v.assign(joints, 0.0);
     const bool bonded =
         std::any_of(v.begin(), v.end(), [](double x) { return x > 0.0; });
-    if (bonded && c.string("joints.formulation") == "paper")
+    if (bonded && out != &b.initial_gap &&
+        c.string("joints.formulation") == "paper")
       c.fail(key, "is given with joints.formulation = \"paper\"",
              "joints.formulation = \"alart_curnier\" for bonded joints");
     *out = std::move(v);
+  }
+  for (std::size_t j = 0; j < joints; ++j)
+  {
+    if (b.initial_gap[j] > 0.0 &&
+        (b.tensile_strength[j] > 0.0 || b.cohesion[j] > 0.0))
+      c.fail("joints.initial_gap",
+             "opens joint " + std::to_string(j + 1) + " (" + order +
+                 "), which has a bond (joints.tensile_strength or "
+                 "joints.cohesion)",
+             "a gap of 0 for a grouted joint, or no bond for an open one");
   }
   return b;
 }
@@ -115,7 +132,8 @@ void refuse_contact_keys_when_bonded(const input::Case& c,
       "joints.restitution",      "joints.impact_correction",
       "joints.dead_load",        "joints.static_increments",
       "joints.history_points",   "joints.formulation",
-      "joints.tensile_strength", "joints.cohesion"};
+      "joints.tensile_strength", "joints.cohesion",
+      "joints.initial_gap"};
   all.insert(all.end(), keys.begin(), keys.end());
   for (const auto& key : all)
   {

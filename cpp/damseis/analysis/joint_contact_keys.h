@@ -16,7 +16,8 @@ namespace damseis::analysis
 {
 /// joints.restitution, joints.impact_correction, joints.dead_load (default
 /// `dead_load_default`), joints.static_increments, joints.formulation,
-/// joints.history_points, joints.tensile_strength, joints.cohesion.
+/// joints.history_points, joints.tensile_strength, joints.cohesion,
+/// joints.initial_gap.
 void add_joint_contact_keys(input::Schema& s,
                             const std::string& dead_load_default);
 
@@ -35,19 +36,21 @@ contact::NcpSettings read_ncp_settings(const input::Case& c);
 std::vector<std::array<double, 3>>
 read_joint_history_points(const input::Case& c);
 
-/// A grouted joint's bond until it fails (per joint, in the demo's joint
-/// order).
-struct JointBonds
+/// Per joint, in the demo's joint order: a grouted joint's bond until it
+/// fails, or an ungrouted joint's initial gap.
+struct JointConditions
 {
   std::vector<double> tensile_strength; ///< [Pa]
   std::vector<double> cohesion;         ///< [Pa]
+  std::vector<double> initial_gap;      ///< [m]
 };
 
-/// joints.tensile_strength and joints.cohesion for `joints` joints ([]: 0
-/// each); `order` says the demo's joint order in messages. Fails if a list
-/// has another length, or a bond is given with the paper's formulation.
-JointBonds read_joint_bonds(const input::Case& c, std::size_t joints,
-                            const std::string& order);
+/// joints.tensile_strength, joints.cohesion and joints.initial_gap for
+/// `joints` joints ([]: 0 each); `order` says the demo's joint order in
+/// messages. Fails if a list has another length, a bond is given with the
+/// paper's formulation, or a joint has both a bond and a gap.
+JointConditions read_joint_conditions(const input::Case& c, std::size_t joints,
+                                      const std::string& order);
 
 /// Fails (input::InputError) if one of `keys` (the contact keys above and
 /// the demo's own) is given while joints.model is not "contact".

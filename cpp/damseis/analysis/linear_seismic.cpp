@@ -453,6 +453,11 @@ json LinearSeismicAnalysis::results()
     summary["joints"]["static_stage"].update(
         joint::write_static_pairs(_comm, dir, *_pairs, *_static_contact));
     summary["joints"]["restitution"] = _contact->restitution;
+    nlohmann::json gaps = nlohmann::json::object();
+    for (const joint::JointSpec& j : _pairs->joints)
+      if (j.initial_gap > 0.0)
+        gaps[j.label] = j.initial_gap;
+    summary["joints"]["initial_gap_m"] = gaps;
   }
   summary["wall_seconds"] = seconds_since(_wall_start);
   print_summary_line(_comm, summary);

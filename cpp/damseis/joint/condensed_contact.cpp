@@ -128,6 +128,8 @@ CondensedContact::CondensedContact(PairSet pairs, contact::NcpSettings ncp)
   }
   _p = _w = Eigen::VectorXd::Zero(3 * n);
   _g0 = Eigen::VectorXd::Zero(n);
+  for (std::size_t i = 0; i < n; ++i)
+    _g0[i] = _pairs.joints[_pairs.joint[i]].initial_gap;
   _wT_ref = Eigen::VectorXd::Zero(2 * n);
   _states.assign(n, contact::PairState::stick);
   _broken.assign(n, 0);

@@ -65,9 +65,9 @@ struct ContactTotals
 class CondensedContact : public dynamics::ConstrainedSolve
 {
 public:
-  /// `pairs` (with their laws); `g0`: initial gap of each pair (empty: 0,
-  /// closed joints). The reference of the tangential slip is w_T = 0 until
-  /// set_reference().
+  /// `pairs` (with their laws); each pair's gap reference g0 is its
+  /// joint's initial gap (g = g0 + w_n). The reference of the tangential
+  /// slip is w_T = 0 until set_state().
   explicit CondensedContact(PairSet pairs, contact::NcpSettings ncp = {});
   ~CondensedContact();
   CondensedContact(const CondensedContact&) = delete;

@@ -30,6 +30,9 @@ struct JointSpec
   /// cohesion [Pa] (0: none, the paper's joints).
   double tensile_strength = 0.0;
   double cohesion = 0.0;
+  /// An open joint's gap at the start [m] (an ungrouted joint's shrinkage
+  /// opening): the faces meet after closing by this much. 0 with a bond.
+  double initial_gap = 0.0;
 };
 
 struct PairSet

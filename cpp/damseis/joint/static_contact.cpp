@@ -112,8 +112,8 @@ StaticContactResult static_contact(Mat K, Mat M, double omega_1, Vec F_dead,
   if (settings.cantilever_dead_load)
   {
     // The blocks carry their own weight; the joints are closed (grouted)
-    // in that state, with no force: the gaps' reference and the slips are
-    // measured from it.
+    // in that state, with no force, or open by their initial gap: the
+    // gaps' reference and the slips are measured from it.
     r.iterations += relax(
         M, r.shift, F_dead, r.u.vec(),
         [&](Vec rhs, Vec u) { c.solve_free(rhs, u); },
@@ -123,7 +123,7 @@ StaticContactResult static_contact(Mat K, Mat M, double omega_1, Vec F_dead,
     const Eigen::VectorXd w = c.relative_of(r.u.vec());
     Eigen::VectorXd g0(n);
     for (std::size_t i = 0; i < n; ++i)
-      g0[i] = -w[3 * i];
+      g0[i] = pairs.joints[pairs.joint[i]].initial_gap - w[3 * i];
     c.set_state(g0, w, Eigen::VectorXd::Zero(3 * n),
                 std::vector<contact::PairState>(n, contact::PairState::stick));
   }
