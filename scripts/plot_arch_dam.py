@@ -52,19 +52,66 @@ def face_triangulation(x, z):
     return tri
 
 
+def joint_planes(out: Path):
+    """Planes (centre, unit normal towards +x) of the contact joints, fitted
+    to each joint's pairs (joint_pairs.csv; arch_dam cuts its joints along
+    planes); none if there are no contact joints or a joint is not plane."""
+    f = out / "joint_pairs.csv"
+    if not f.exists():
+        return []
+    d = np.genfromtxt(f, delimiter=",", names=True, dtype=None,
+                      encoding=None)
+    pts = np.column_stack([d["x"], d["y"], d["z"]]).astype(float)
+    planes = []
+    for label in dict.fromkeys(np.atleast_1d(d["joint"])):
+        p = pts[np.atleast_1d(d["joint"]) == label]
+        c = p.mean(axis=0)
+        _, sv, vt = np.linalg.svd(p - c)
+        if len(p) < 3 or sv[2] > 1e-4 * sv[0]:  # the CSV's six digits
+            return []
+        n = vt[2] if vt[2][0] > 0 else -vt[2]
+        planes.append((c, n))
+    return planes
+
+
+def face_blocks(d, planes):
+    """The block (monolith) of each face point: the number of joint planes
+    it lies beyond (towards +x); a point on a plane (the joint's edge on
+    the face, where each side has its own point) belongs to the block of
+    its side (column joint_side: 1 on side 2, the block beyond)."""
+    q = np.column_stack([d["x_m"], d["y_m"], d["z_m"]])
+    block = np.zeros(len(q), dtype=int)
+    if not planes or "joint_side" not in d.dtype.names:
+        return block
+    # The planes come from six-digit coordinates; the points off a plane
+    # lie an element or so away from it.
+    tol = 1e-4 * np.ptp(q, axis=0).max()
+    for c, n in planes:
+        s = (q - c) @ n
+        on = np.abs(s) <= tol
+        block += (s > tol) | (on & (d["joint_side"] > 0))
+    return block
+
+
 def plot_face_maps(out: Path, summary: dict, suffix: str, panels, title: str,
                    png: str) -> None:
     """Maps of face envelopes, a row per face (face_<face><suffix>.csv),
     a column per panel (CSV column, title, summary extreme of the face)."""
     fig, axes = plt.subplots(2, 2, figsize=(13, 8))
     r = summary.get("away_from_singular_points", {}).get("radius_m")
+    planes = joint_planes(out)
     for row, face in enumerate(("upstream", "downstream")):
         d = np.genfromtxt(out / f"face_{face}{suffix}.csv", delimiter=",",
                           names=True)
         # Observer in front of the face: the downstream face is seen looking
         # upstream, so the left bank (x < 0) is on the right.
         x = -d["x_m"] if face == "downstream" else d["x_m"]
-        tri = face_triangulation(x, d["z_m"])
+        # With contact joints each block is drawn apart: the contours break
+        # across the joints (open or sliding, they carry no continuity).
+        block = face_blocks(d, planes)
+        tris = [(b, face_triangulation(x[b], d["z_m"][b]))
+                for b in (block == k for k in np.unique(block))
+                if b.sum() >= 3]
         for col, (key, what, extreme) in enumerate(panels):
             ax = axes[row, col]
             # Colour range without the points near the dam-rock contact
@@ -80,8 +127,14 @@ def plot_face_maps(out: Path, summary: dict, suffix: str, panels, title: str,
                       "min" if v.min() < lo else
                       "max" if v.max() > hi else "neither")
             levels = np.linspace(lo, hi, 21) if hi > lo else 20
-            cs = ax.tricontourf(tri, np.clip(v, lo, hi), levels=levels,
-                                cmap="RdYlBu_r", extend=extend)
+            for b, tri in tris:
+                cs = ax.tricontourf(tri, np.clip(v[b], lo, hi), levels=levels,
+                                    cmap="RdYlBu_r", extend=extend)
+            if len(tris) > 1:  # the joints' edges on the face
+                for k in range(len(tris) - 1):
+                    e = (block == k + 1) & (d["joint_side"] > 0)
+                    order = np.argsort(d["z_m"][e])
+                    ax.plot(x[e][order], d["z_m"][e][order], "k-", lw=0.6)
             fig.colorbar(cs, ax=ax, shrink=0.85, label="MPa")
             e, note = extreme(summary["faces"][face])
             if e is not None:

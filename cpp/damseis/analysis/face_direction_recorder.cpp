@@ -41,10 +41,11 @@ void FaceDirectionRecorder::restore(const engine::CheckpointData& data)
         engine::checkpoint_array(data, "arch_cantilever_" + _names[i]));
 }
 
-nlohmann::json
-FaceDirectionRecorder::write(MPI_Comm comm, const SeismicSettings& s,
-                             const std::filesystem::path& dir) const
+nlohmann::json FaceDirectionRecorder::write(
+    MPI_Comm comm, const SeismicSettings& s, const std::filesystem::path& dir,
+    const std::vector<std::vector<std::int8_t>>& joint_sides) const
 {
+  const bool sides = !joint_sides.empty();
   const results::StressEnvelope& env = _stresses.envelope();
   nlohmann::json out = nlohmann::json::object();
   for (std::size_t f = 0; f < _names.size(); ++f)
@@ -71,12 +72,15 @@ FaceDirectionRecorder::write(MPI_Comm comm, const SeismicSettings& s,
                                  e.min()[k] * 1e-6, e.min_times()[k]});
       }
       rows.push_back(dist);
+      if (sides) // the points are those of the face (the constructor's)
+        rows.push_back(joint_sides[f].at(i));
     }
-    write_rows_csv(comm, rows, 12,
-                   "x_m,y_m,z_m,arch_max_mpa,t_arch_max_s,arch_min_mpa,"
-                   "t_arch_min_s,cantilever_max_mpa,t_cantilever_max_s,"
-                   "cantilever_min_mpa,t_cantilever_min_s,"
-                   "distance_to_singular_m",
+    write_rows_csv(comm, rows, sides ? 13 : 12,
+                   std::string("x_m,y_m,z_m,arch_max_mpa,t_arch_max_s,"
+                               "arch_min_mpa,t_arch_min_s,cantilever_max_mpa,"
+                               "t_cantilever_max_s,cantilever_min_mpa,"
+                               "t_cantilever_min_s,distance_to_singular_m") +
+                       (sides ? ",joint_side" : ""),
                    dir / ("face_" + _names[f] + "_arch_cantilever.csv"));
     nlohmann::json face;
     for (int d = 0; d < 2; ++d)

@@ -31,10 +31,13 @@ public:
   void restore(const engine::CheckpointData& data) override;
   /// face_<name>_arch_cantilever.csv per face (rank 0; MPa) and, per face,
   /// the largest arch and cantilever tension and compression over the
-  /// points farther than s.singular_radius from the singular points.
-  /// Collective.
-  nlohmann::json write(MPI_Comm comm, const SeismicSettings& s,
-                       const std::filesystem::path& dir) const;
+  /// points farther than s.singular_radius from the singular points;
+  /// `joint_sides` (may be empty): per face and point, a column joint_side
+  /// as in write_face_csv. Collective.
+  nlohmann::json
+  write(MPI_Comm comm, const SeismicSettings& s,
+        const std::filesystem::path& dir,
+        const std::vector<std::vector<std::int8_t>>& joint_sides = {}) const;
 
 private:
   const StressRecorder& _stresses;

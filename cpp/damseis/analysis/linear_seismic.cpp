@@ -71,6 +71,7 @@ private:
   void modal_stage_closed_joints();
   /// The faces of the output settings as pair faces (joint tables).
   std::vector<joint::PairFace> pair_faces() const;
+  std::vector<std::vector<std::int8_t>> face_joint_sides() const;
 
   fem::ElasticModel& _fe;
   const SeismicSettings& _s;
@@ -404,6 +405,38 @@ std::vector<joint::PairFace> LinearSeismicAnalysis::pair_faces() const
   return faces;
 }
 
+/// Per face, per point: -1 on side 1 of a contact joint, 1 on side 2, 0
+/// elsewhere (none without contact joints).
+std::vector<std::vector<std::int8_t>>
+LinearSeismicAnalysis::face_joint_sides() const
+{
+  if (!_contact)
+    return {};
+  const auto& S = *_fe.S();
+  const auto& map = *S.dofmap()->index_map;
+  std::vector<std::int8_t> side(map.size_local() + map.num_ghosts(), 0);
+  std::vector<int> side1, side2;
+  for (const joint::JointSpec& j : _contact->joints)
+  {
+    side1.push_back(j.tag_side1);
+    side2.push_back(j.tag_side2);
+  }
+  for (auto [tags, value] :
+       {std::pair{&side1, std::int8_t(-1)}, std::pair{&side2, std::int8_t(1)}})
+    results::for_each_face_point(
+        S, *_contact->facet_tags, *tags, true,
+        [&, value](std::int32_t, std::int32_t, std::int32_t p)
+        { side[p] = value; });
+  std::vector<std::vector<std::int8_t>> sides;
+  for (const auto& points : _face_points)
+  {
+    std::vector<std::int8_t>& s = sides.emplace_back();
+    for (std::int32_t p : points)
+      s.push_back(side[p]);
+  }
+  return sides;
+}
+
 json LinearSeismicAnalysis::results()
 {
   results::set_stage("writing outputs");
@@ -423,10 +456,11 @@ json LinearSeismicAnalysis::results()
                            dir / "envelopes.xdmf");
   if (_face_u)
     _face_u->write_csv(_comm, dir / "displacement_envelope.csv");
-  json faces = write_faces(_comm, _s, envelope, _face_points, dim, dir);
+  const auto sides = face_joint_sides();
+  json faces = write_faces(_comm, _s, envelope, _face_points, dim, dir, sides);
   if (_face_directions)
   {
-    const json d = _face_directions->write(_comm, _s, dir);
+    const json d = _face_directions->write(_comm, _s, dir, sides);
     for (const auto& [name, v] : d.items())
       faces[name]["arch_cantilever_away_from_singular_points"] = v;
   }

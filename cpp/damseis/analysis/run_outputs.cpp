@@ -57,20 +57,27 @@ double seconds_since(std::chrono::steady_clock::time_point t0)
 void write_face_csv(MPI_Comm comm, const results::StressEnvelope& env,
                     std::span<const std::int32_t> points,
                     std::span<const std::array<double, 3>> singular,
-                    const std::filesystem::path& file)
+                    const std::filesystem::path& file,
+                    std::span<const std::int8_t> joint_sides)
 {
+  const bool sides = !joint_sides.empty();
   std::vector<double> local;
-  for (std::int32_t p : points)
+  for (std::size_t i = 0; i < points.size(); ++i)
   {
+    const std::int32_t p = points[i];
     const auto& x = env.point(p);
     local.insert(local.end(),
                  {x[0], x[1], x[2], env.max_principal()[p] * 1e-6,
                   env.max_times()[p], env.min_principal()[p] * 1e-6,
                   env.min_times()[p], results::distance_to(x, singular)});
+    if (sides)
+      local.push_back(joint_sides[i]);
   }
-  write_rows_csv(comm, local, 8,
-                 "x_m,y_m,z_m,max_principal_mpa,t_max_s,min_principal_mpa,"
-                 "t_min_s,distance_to_singular_m",
+  write_rows_csv(comm, local, sides ? 9 : 8,
+                 std::string("x_m,y_m,z_m,max_principal_mpa,t_max_s,"
+                             "min_principal_mpa,t_min_s,"
+                             "distance_to_singular_m") +
+                     (sides ? ",joint_side" : ""),
                  file);
 }
 
@@ -335,14 +342,17 @@ void print_summary_line(MPI_Comm comm, const json& summary,
 json write_faces(MPI_Comm comm, const SeismicSettings& s,
                  const results::StressEnvelope& env,
                  const std::vector<std::vector<std::int32_t>>& pts, int dim,
-                 const std::filesystem::path& out_dir)
+                 const std::filesystem::path& out_dir,
+                 const std::vector<std::vector<std::int8_t>>& joint_sides)
 {
   json faces = json::object();
   for (std::size_t i = 0; i < s.faces.size(); ++i)
   {
     const std::string& name = s.faces[i].first;
     write_face_csv(comm, env, pts[i], s.singular_points,
-                   out_dir / ("face_" + name + ".csv"));
+                   out_dir / ("face_" + name + ".csv"),
+                   joint_sides.empty() ? std::span<const std::int8_t>()
+                                       : joint_sides[i]);
     json away = away_from_singular(comm, s, env, dim, &pts[i]);
     away.erase("radius_m");
     faces[name] = {{"max_principal_tension_mpa",

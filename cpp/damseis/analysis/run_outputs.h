@@ -50,11 +50,14 @@ void write_rows_csv(MPI_Comm comm, const std::vector<double>& local,
                     const std::filesystem::path& file);
 
 /// Writes the envelope values of the given owned points of every rank into
-/// a CSV file on rank 0.
+/// a CSV file on rank 0; with `joint_sides` (one per point: -1 on the side
+/// 1 of a contact joint, 1 on side 2, 0 elsewhere) a column joint_side, so
+/// that plots can draw each block apart (contours break across joints).
 void write_face_csv(MPI_Comm comm, const results::StressEnvelope& env,
                     std::span<const std::int32_t> points,
                     std::span<const std::array<double, 3>> singular,
-                    const std::filesystem::path& file);
+                    const std::filesystem::path& file,
+                    std::span<const std::int8_t> joint_sides = {});
 
 /// Post-processes the crest history (per step: crest then base displacement
 /// components, already reduced over ranks): writes crest.csv (relative to
@@ -103,9 +106,12 @@ nlohmann::json away_from_singular(MPI_Comm comm, const SeismicSettings& s,
 void print_summary_line(MPI_Comm comm, const nlohmann::json& summary,
                         const std::string& extra = "");
 
-/// Per-face envelope tables (face_<name>.csv) and summary entries.
-nlohmann::json write_faces(MPI_Comm comm, const SeismicSettings& s,
-                           const results::StressEnvelope& env,
-                           const std::vector<std::vector<std::int32_t>>& pts,
-                           int dim, const std::filesystem::path& out_dir);
+/// Per-face envelope tables (face_<name>.csv) and summary entries;
+/// `joint_sides` (may be empty): per face, per point, as write_face_csv.
+nlohmann::json
+write_faces(MPI_Comm comm, const SeismicSettings& s,
+            const results::StressEnvelope& env,
+            const std::vector<std::vector<std::int32_t>>& pts, int dim,
+            const std::filesystem::path& out_dir,
+            const std::vector<std::vector<std::int8_t>>& joint_sides = {});
 } // namespace damseis::analysis
