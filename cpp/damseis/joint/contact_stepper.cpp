@@ -94,17 +94,24 @@ dynamics::StepReport ContactStepper::step(Vec f)
     gap_before[i] = _contact->states()[i] == contact::PairState::open
                         ? _contact->gap(i)
                         : 0.0;
-  const long iterations = _contact->totals().ncp_iterations;
+  const ContactTotals before = _contact->totals();
   engine::LinearStepper::step(f);
-  _last_iterations = _contact->totals().ncp_iterations - iterations;
   const auto t0 = std::chrono::steady_clock::now();
   if (_e >= 0.0)
     impact_correction(gap_before);
-  _contact->totals().seconds_impact +=
+  ContactTotals& t = _contact->totals();
+  t.seconds_impact +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
           .count();
+  _last = {t.solves - before.solves,
+           t.ncp_iterations - before.ncp_iterations,
+           t.line_search_steps - before.line_search_steps,
+           t.gradient_steps - before.gradient_steps,
+           t.state_changes - before.state_changes,
+           t.impacts - before.impacts,
+           t.bonds_broken - before.bonds_broken};
   dynamics::StepReport report;
-  report.iterations = static_cast<int>(_last_iterations);
+  report.iterations = static_cast<int>(_last.ncp_iterations);
   return report;
 }
 
@@ -212,8 +219,8 @@ std::string ContactStepper::progress_note(const dynamics::StepReport&) const
     slip += s == contact::PairState::slip;
   }
   std::ostringstream note;
-  note << "  NCP " << _last_iterations << " it, " << open << " open, " << slip
-       << " sliding of " << _contact->states().size() << " pairs";
+  note << "  NCP " << _last.ncp_iterations << " it, " << open << " open, "
+       << slip << " sliding of " << _contact->states().size() << " pairs";
   return note.str();
 }
 } // namespace damseis::joint

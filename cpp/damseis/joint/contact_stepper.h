@@ -44,7 +44,9 @@ public:
 
   const CondensedContact& contact() const { return *_contact; }
   /// NCP iterations of the last step.
-  long last_ncp_iterations() const { return _last_iterations; }
+  long last_ncp_iterations() const { return _last.ncp_iterations; }
+  /// The contact work of the last step (counts; rank 0 holds them).
+  const ContactTotals& last_step() const { return _last; }
 
 private:
   /// Corrects the velocities of the pairs that closed in the last step
@@ -60,6 +62,6 @@ private:
   Vec _pair_values = nullptr;
   Eigen::VectorXd _mass;      ///< lumped mass at the pair unknowns (rank 0)
   std::vector<char> _movable; ///< both nodes of the pair have mass
-  long _last_iterations = 0;
+  ContactTotals _last;        ///< the totals' increments over the last step
 };
 } // namespace damseis::joint

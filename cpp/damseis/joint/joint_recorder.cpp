@@ -9,7 +9,7 @@ namespace damseis::joint
 {
 namespace
 {
-constexpr int step_columns = 5;
+constexpr int step_columns = 8;
 
 /// The largest of `value` over the pairs of joint j that are on `face`
 /// (all pairs if face is null), with its pair index (-1: none).
@@ -138,9 +138,13 @@ void JointRecorder::record(int, double t)
     _histories.push_back(
         (w.segment<2>(3 * i + 1) - _w_static.segment<2>(3 * i + 1)).norm());
   }
+  const ContactTotals& last = _stepper.last_step();
   _steps.insert(_steps.end(),
                 {t, static_cast<double>(open), static_cast<double>(sliding),
-                 widest, static_cast<double>(_stepper.last_ncp_iterations())});
+                 widest, static_cast<double>(last.ncp_iterations),
+                 static_cast<double>(last.line_search_steps),
+                 static_cast<double>(last.state_changes),
+                 static_cast<double>(last.impacts)});
 }
 
 void JointRecorder::save(engine::Arrays& arrays) const
@@ -226,11 +230,15 @@ nlohmann::json JointRecorder::write(MPI_Comm comm,
         << "\n";
     }
     std::ofstream s(dir / "joint_steps.csv");
-    s << "t_s,pairs_open,pairs_sliding,widest_opening_cm,ncp_iterations\n";
+    s << "t_s,pairs_open,pairs_sliding,widest_opening_cm,ncp_iterations,"
+         "line_search_steps,state_changes,impacts\n";
     for (std::size_t k = 0; k < _steps.size(); k += step_columns)
     {
       s << _steps[k] << "," << _steps[k + 1] << "," << _steps[k + 2] << ","
-        << 100.0 * _steps[k + 3] << "," << _steps[k + 4] << "\n";
+        << 100.0 * _steps[k + 3];
+      for (int j = 4; j < step_columns; ++j)
+        s << "," << _steps[k + j];
+      s << "\n";
     }
     write_histories(dir / "joint_histories.csv");
     // The tables: joints as rows; opening and sliding, overall and per face.
