@@ -111,14 +111,16 @@ LinearNewmark::LinearNewmark(Mat M, Mat K, RayleighDamping damping,
     for (Vec& x : *set)
       MatCreateVecs(K, &x, nullptr);
   }
-  for (Vec* x : {&_f, &_rhs, &_u_next, &_image_next, &_r})
+  for (Vec* x : {&_f, &_rhs, &_u_next, &_image_next, &_r, &_u_old, &_cv_old,
+                 &_r_old, &_impulse})
     MatCreateVecs(K, x, nullptr);
   for (std::array<Vec, 3>* set : {&_x, &_Mx, &_Kx, &_Cx})
   {
     for (Vec x : *set)
       VecSet(x, 0.0);
   }
-  for (Vec x : {_f, _rhs, _u_next, _image_next, _r})
+  for (Vec x :
+       {_f, _rhs, _u_next, _image_next, _r, _u_old, _cv_old, _r_old, _impulse})
     VecSet(x, 0.0);
 }
 
@@ -129,7 +131,8 @@ LinearNewmark::~LinearNewmark()
     for (Vec& x : *set)
       VecDestroy(&x);
   }
-  for (Vec* x : {&_f, &_rhs, &_u_next, &_image_next, &_r})
+  for (Vec* x : {&_f, &_rhs, &_u_next, &_image_next, &_r, &_u_old, &_cv_old,
+                 &_r_old, &_impulse})
     VecDestroy(x);
   MatDestroy(&_Keff);
   MatDestroy(&_Ce);
@@ -147,6 +150,36 @@ void LinearNewmark::set_state(Vec u, Vec v, Vec a, Vec f)
       MatMult(_Ce, _x[i], _Cx[i]);
   }
   VecCopy(f, _f);
+  // The constraint force the state holds: r = M a + C v + K u - f (the
+  // static contact forces of a run in total state).
+  damping_force(_r_old);
+  VecAXPBYPCZ(_r_old, 1.0, 1.0, 1.0, _Mx[2], _Kx[0]);
+  VecAXPY(_r_old, -1.0, _f);
+  VecCopy(_r_old, _r);
+  update_energies();
+  if (!_energy.started)
+  {
+    _energy.kinetic0 = _energy.kinetic;
+    _energy.strain0 = _energy.strain;
+    _energy.started = true;
+  }
+}
+
+void LinearNewmark::damping_force(Vec out) const
+{
+  VecAXPBY(out, _damping.a_mass, 0.0, _Mx[1]);
+  VecAXPY(out, _damping.b_stiffness, _Kx[1]);
+  if (_Ce)
+    VecAXPY(out, 1.0, _Cx[1]);
+}
+
+void LinearNewmark::update_energies()
+{
+  double vMv = 0.0, uKu = 0.0;
+  VecDot(_x[1], _Mx[1], &vMv);
+  VecDot(_x[0], _Kx[0], &uKu);
+  _energy.kinetic = 0.5 * vMv;
+  _energy.strain = 0.5 * uKu;
 }
 
 namespace
@@ -188,6 +221,10 @@ void LinearNewmark::step(Vec f_next)
                a2 = 1.0 / (beta * dt), a3 = 0.5 / beta - 1.0,
                a4 = gamma / beta - 1.0, a5 = dt * (0.5 * gamma / beta - 1.0);
   const double aM = _damping.a_mass, bK = _damping.b_stiffness;
+  // The step's start for the energy balance (r_old: the constraint force
+  // of the last step, or of the state set).
+  VecCopy(_x[0], _u_old);
+  damping_force(_cv_old);
 
   // HHT: M a' + (1 + alpha)(C v' + K u') - alpha (C v + K u)
   //        = (1 + alpha) f' - alpha f,
@@ -239,27 +276,51 @@ void LinearNewmark::step(Vec f_next)
   VecScale(_image_next, 1.0 / _cK);
   advance(_Kx, _image_next, a0, a2, a3, dt, gamma);
   advance(_x, _u_next, a0, a2, a3, dt, gamma);
+
+  // The energy balance: du times the mean load, damping force and
+  // constraint force over the step (trapezoidal rule).
+  VecAYPX(_u_old, -1.0, _x[0]); // du
+  double work[7] = {};
+  damping_force(_image_next);
+  const std::array<Vec, 7> forces = {_f,     f_next, _cv_old, _image_next,
+                                     _r_old, _r,     _impulse};
+  VecMDot(_u_old, 7, forces.data(), work);
+  _energy.external_work += 0.5 * (work[0] + work[1]);
+  _energy.damping += 0.5 * (work[2] + work[3]);
+  _energy.constraint_work += 0.5 * (work[4] + work[5]);
+  _energy.impact += 0.5 * work[6];
+  VecSet(_impulse, 0.0);
+  update_energies();
+  VecCopy(_r, _r_old);
   VecCopy(f_next, _f);
 }
 void LinearNewmark::correct_velocity(Vec dv)
 {
-  // v += dv, a += dv / (gamma dt), and the same for the images M x, K x,
-  // C_e x (by products with dv: symmetric matrices, dv nonzero at the
-  // closing pairs' nodes only).
-  const double c = 1.0 / (_scheme.gamma() * _scheme.dt);
+  const double before = _energy.kinetic;
+  // v += dv, and the images M v, K v, C_e v by products with dv (symmetric
+  // matrices, dv nonzero at the closing pairs' nodes only). The
+  // acceleration stays: it satisfies the equation of motion, but for the
+  // damping force C dv the jump adds (the impulse is M dv, at once). (Making
+  // a follow the Newmark update instead, a += dv / (gamma dt), turns the
+  // impulse into a force M dv / (gamma dt) over the next step that does
+  // work: two bars meeting gained 3x their energy with restitution 0.)
   VecAXPY(_x[1], 1.0, dv);
-  VecAXPY(_x[2], c, dv);
-  std::array<std::pair<Mat, std::array<Vec, 3>*>, 3> images = {
+  const std::array<std::pair<Mat, std::array<Vec, 3>*>, 3> images = {
       std::make_pair(_M, &_Mx), std::make_pair(_K, &_Kx),
       std::make_pair(_Ce, &_Cx)};
-  for (auto [A, x] : images)
+  const std::array<double, 3> damping = {_damping.a_mass, _damping.b_stiffness,
+                                         1.0};
+  for (int i = 0; i < 3; ++i)
   {
+    auto [A, x] = images[i];
     if (!A)
       continue;
     sparse_symmetric_product(A, dv, _image_next);
     VecAXPY((*x)[1], 1.0, _image_next);
-    VecAXPY((*x)[2], c, _image_next);
+    VecAXPY(_impulse, damping[i], _image_next);
   }
+  update_energies();
+  _energy.impact += _energy.kinetic - before;
 }
 
 std::string LinearNewmark::solver_name() const

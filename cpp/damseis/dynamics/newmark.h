@@ -49,6 +49,36 @@ public:
   virtual double factor_seconds() const = 0;
 };
 
+/// The energy balance of a run since its start [J] (the relative
+/// formulation's energies where the load is the base acceleration's; Uang
+/// and Bertero 1990): kinetic 1/2 v.Mv and strain 1/2 u.Ku now and at the
+/// start; summed over the steps with the trapezoidal rule, the work of the
+/// loads (du.(f_n + f_n+1)/2), the energy dissipated by damping
+/// (du.(Cv_n + Cv_n+1)/2), the work of the constraint forces (joint
+/// contact: du.(r_n + r_n+1)/2, negative where friction and impacts
+/// dissipate), and the energy the impact corrections changed (the kinetic
+/// energy at once, and in the next step the work of the damping force the
+/// velocity jump leaves out of balance). The
+/// balance error is zero to round-off for Newmark's average acceleration
+/// (alpha = 0: du = dt (v_n + v_n+1)/2 and du.M(a_n + a_n+1)/2 is the
+/// change of kinetic energy); HHT's alpha < 0 makes it negative, the energy
+/// its damping of the high frequencies removed.
+struct EnergyBalance
+{
+  double kinetic = 0.0, strain = 0.0;
+  double kinetic0 = 0.0, strain0 = 0.0;
+  double external_work = 0.0, damping = 0.0, constraint_work = 0.0;
+  double impact = 0.0;
+  bool started = false;
+  /// Energy now less energy in: the start's, the loads', the
+  /// constraints' and the impacts' (positive: energy created).
+  double error() const
+  {
+    return kinetic + strain - kinetic0 - strain0 + damping - external_work -
+           constraint_work - impact;
+  }
+};
+
 /// The integrator. State vectors have the layout of K's columns.
 ///
 /// Besides (u, v, a) it carries their images M u, M v, M a and K u, K v,
@@ -79,13 +109,18 @@ public:
   void set_state(Vec u, Vec v, Vec a, Vec f);
   /// Advances one step to the load f_next = f(t + dt).
   void step(Vec f_next);
-  /// Changes the velocity of the last step by dv, with the acceleration
-  /// kept consistent with the Newmark velocity update (a += dv / (gamma
-  /// dt)) and the displacement unchanged: the impact correction of joint
-  /// pairs that close.
+  /// Changes the velocity of the last step by dv (an impulse M dv), the
+  /// displacement and the acceleration unchanged (the acceleration still
+  /// satisfies the equation of motion but for the damping force C dv, which
+  /// the energy balance counts): the impact correction of joint pairs that
+  /// close.
   void correct_velocity(Vec dv);
   /// The constraint force r of the last step (zero without constraints).
   Vec constraint_force() const { return _r; }
+  /// The energy balance since the start (every rank).
+  const EnergyBalance& energy() const { return _energy; }
+  /// Takes the sums of a checkpoint (before set_state on restart).
+  void set_energy(const EnergyBalance& e) { _energy = e; }
 
   Vec u() const { return _x[0]; }
   Vec v() const { return _x[1]; }
@@ -108,5 +143,16 @@ private:
   std::array<Vec, 3> _x{}, _Mx{}, _Kx{}, _Cx{};
   Vec _f = nullptr, _rhs = nullptr, _u_next = nullptr, _image_next = nullptr;
   Vec _r = nullptr; ///< the constraint force of the last step
+  /// The energy balance; the last step's start: u, C v and the
+  /// constraint force.
+  EnergyBalance _energy;
+  Vec _u_old = nullptr, _cv_old = nullptr, _r_old = nullptr;
+  /// C dv of the last velocity correction: the force out of balance
+  /// in the equation of motion at the next step's start.
+  Vec _impulse = nullptr;
+  /// C v of the current state (from the images) into `out`.
+  void damping_force(Vec out) const;
+  /// Kinetic and strain energy of the current state.
+  void update_energies();
 };
 } // namespace damseis::dynamics

@@ -53,6 +53,9 @@ void LinearStepper::save(Arrays& arrays) const
   const std::array<Vec, 3> x = {u(), v(), a()};
   for (int i = 0; i < 3; ++i)
     arrays[state_names[i]] = linalg::owned_values(x[i]);
+  const dynamics::EnergyBalance& e = _newmark.energy();
+  arrays["energy"] = {e.kinetic0, e.strain0,         e.external_work,
+                      e.damping,  e.constraint_work, e.impact};
 }
 
 void LinearStepper::restore(const CheckpointData& data)
@@ -63,6 +66,16 @@ void LinearStepper::restore(const CheckpointData& data)
     linalg::set_owned_values(_restored[i].vec(),
                              checkpoint_array(data, state_names[i]));
   }
+  const std::vector<double> e = checkpoint_array(data, "energy", 6);
+  dynamics::EnergyBalance balance;
+  balance.kinetic0 = e[0];
+  balance.strain0 = e[1];
+  balance.external_work = e[2];
+  balance.damping = e[3];
+  balance.constraint_work = e[4];
+  balance.impact = e[5];
+  balance.started = true;
+  _newmark.set_energy(balance);
 }
 
 void LinearStepper::resume(Vec f)

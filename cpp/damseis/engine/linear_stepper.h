@@ -33,6 +33,10 @@ public:
   void resume(Vec f) override;
   std::string solver_name() const override { return _newmark.solver_name(); }
   double factor_seconds() const override { return _newmark.factor_seconds(); }
+  const dynamics::EnergyBalance* energy() const override
+  {
+    return &_newmark.energy();
+  }
 
 protected:
   dynamics::LinearNewmark& newmark() { return _newmark; }

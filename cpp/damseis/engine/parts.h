@@ -52,6 +52,9 @@ public:
   virtual std::string solver_name() const = 0;
   /// Seconds spent factorising so far.
   virtual double factor_seconds() const = 0;
+  /// The energy balance since the start, where the stepper keeps one
+  /// (linear steppers), else null.
+  virtual const dynamics::EnergyBalance* energy() const { return nullptr; }
 };
 
 /// The external load of the time history.
