@@ -131,8 +131,8 @@ def plot_face_maps(out: Path, summary: dict, suffix: str, panels, title: str,
                 cs = ax.tricontourf(tri, np.clip(v[b], lo, hi), levels=levels,
                                     cmap="RdYlBu_r", extend=extend)
             if len(tris) > 1:  # the joints' edges on the face
-                for k in range(len(tris) - 1):
-                    e = (block == k + 1) & (d["joint_side"] > 0)
+                for k in range(1, block.max() + 1):
+                    e = (block == k) & (d["joint_side"] > 0)
                     order = np.argsort(d["z_m"][e])
                     ax.plot(x[e][order], d["z_m"][e][order], "k-", lw=0.6)
             fig.colorbar(cs, ax=ax, shrink=0.85, label="MPa")

@@ -58,8 +58,8 @@ nlohmann::json EnergyRecorder::write(MPI_Comm comm,
   if (rank == 0)
   {
     std::ofstream f(file);
-    f << "t_s,kinetic_kj,strain_kj,load_work_kj,damping_kj,joint_work_kj,"
-         "impact_kj,balance_error_kj\n";
+    f << "t_s,kinetic_change_kj,strain_change_kj,load_work_kj,damping_kj,"
+         "joint_work_kj,impact_kj,balance_error_kj\n";
     f.precision(10);
     for (std::size_t k = 0; k < _rows.size(); k += columns)
     {
@@ -75,7 +75,7 @@ nlohmann::json EnergyRecorder::write(MPI_Comm comm,
   return {
       {"note", "changes since the start [J]: kinetic + strain + damping "
                "= load work + joint work + impact corrections + error"},
-      {"max_kinetic_j", kinetic},
+      {"max_kinetic_change_j", kinetic},
       {"load_work_j", last[3]},
       {"damping_j", last[4]},
       {"joint_work_j", last[5]},

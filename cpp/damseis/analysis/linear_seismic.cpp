@@ -416,28 +416,56 @@ std::vector<joint::PairFace> LinearSeismicAnalysis::pair_faces() const
   return faces;
 }
 
-/// Per face, per point: -1 on side 1 of a contact joint, 1 on side 2, 0
-/// elsewhere (none without contact joints).
+/// Per face, per point: -1 at a vertex of side 1 of a contact joint, 1 at
+/// a vertex of side 2 (the split mesh's copy), 0 elsewhere (none without
+/// contact joints). The stress points of P2 models sit at the cells'
+/// vertices, one per cell: each takes its vertex's side, so that cells
+/// touching a joint along an edge or at a vertex count too. (P1 models'
+/// points are cell centres, off the joints: 0.)
 std::vector<std::vector<std::int8_t>>
 LinearSeismicAnalysis::face_joint_sides() const
 {
   if (!_contact)
     return {};
   const auto& S = *_fe.S();
+  auto mesh = S.mesh();
+  const int tdim = mesh->topology().dim();
+  auto& topology = mesh->topology_mutable();
+  topology.create_connectivity(tdim - 1, 0);
+  topology.create_connectivity(tdim, 0);
+  auto f_to_v = topology.connectivity(tdim - 1, 0);
+  auto c_to_v = topology.connectivity(tdim, 0);
+  const auto& vmap = *topology.index_map(0);
+  std::vector<std::int8_t> vertex_side(vmap.size_local() + vmap.num_ghosts(),
+                                       0);
+  const auto& joint_tags = *_contact->facet_tags;
+  for (std::size_t i = 0; i < joint_tags.indices().size(); ++i)
+  {
+    const int tag = joint_tags.values()[i];
+    for (const joint::JointSpec& j : _contact->joints)
+    {
+      if (tag != j.tag_side1 && tag != j.tag_side2)
+        continue;
+      for (std::int32_t v : f_to_v->links(joint_tags.indices()[i]))
+        vertex_side[v] = tag == j.tag_side1 ? -1 : 1;
+    }
+  }
   const auto& map = *S.dofmap()->index_map;
   std::vector<std::int8_t> side(map.size_local() + map.num_ghosts(), 0);
-  std::vector<int> side1, side2;
-  for (const joint::JointSpec& j : _contact->joints)
-  {
-    side1.push_back(j.tag_side1);
-    side2.push_back(j.tag_side2);
-  }
-  for (auto [tags, value] :
-       {std::pair{&side1, std::int8_t(-1)}, std::pair{&side2, std::int8_t(1)}})
+  const auto& tags = _s.face_tags ? *_s.face_tags : *_fe.model().facet_tags;
+  for (const auto& [name, face_tags] : _s.faces)
     results::for_each_face_point(
-        S, *_contact->facet_tags, *tags, true,
-        [&, value](std::int32_t, std::int32_t, std::int32_t p)
-        { side[p] = value; });
+        S, tags, face_tags, true,
+        [&](std::int32_t, std::int32_t c, std::int32_t p)
+        {
+          auto dofs = S.dofmap()->cell_dofs(c);
+          auto cv = c_to_v->links(c);
+          if (dofs.size() != cv.size())
+            return; // a point per cell (P1): inside the cell
+          for (std::size_t k = 0; k < dofs.size(); ++k)
+            if (dofs[k] == p)
+              side[p] = vertex_side[cv[k]];
+        });
   std::vector<std::vector<std::int8_t>> sides;
   for (const auto& points : _face_points)
   {

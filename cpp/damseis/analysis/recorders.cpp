@@ -410,7 +410,7 @@ void GroupStates::record(int k, double)
   const std::size_t n = _weights.size();
   if (n == 0)
     return;
-  // u, v, a summed over the groups' owned nodes, one reduction.
+  // u, v, a weighted sums over the groups' owned dofs, one reduction.
   std::vector<double> sums(3 * n * _dim, 0.0), part(n * _dim);
   const std::array<Vec, 3> states = {_stepper.u(), _stepper.v(), _stepper.a()};
   for (int q = 0; q < 3; ++q)

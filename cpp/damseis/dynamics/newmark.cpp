@@ -151,11 +151,18 @@ void LinearNewmark::set_state(Vec u, Vec v, Vec a, Vec f)
   }
   VecCopy(f, _f);
   // The constraint force the state holds: r = M a + C v + K u - f (the
-  // static contact forces of a run in total state).
-  damping_force(_r_old);
-  VecAXPBYPCZ(_r_old, 1.0, 1.0, 1.0, _Mx[2], _Kx[0]);
-  VecAXPY(_r_old, -1.0, _f);
+  // static contact forces of a run in total state); none without
+  // constraints. (A restart puts back the saved forces: set_forces.)
+  if (_constrained)
+  {
+    damping_force(_r_old);
+    VecAXPBYPCZ(_r_old, 1.0, 1.0, 1.0, _Mx[2], _Kx[0]);
+    VecAXPY(_r_old, -1.0, _f);
+  }
+  else
+    VecSet(_r_old, 0.0);
   VecCopy(_r_old, _r);
+  VecSet(_impulse, 0.0);
   update_energies();
   if (!_energy.started)
   {
@@ -163,6 +170,13 @@ void LinearNewmark::set_state(Vec u, Vec v, Vec a, Vec f)
     _energy.strain0 = _energy.strain;
     _energy.started = true;
   }
+}
+
+void LinearNewmark::set_forces(Vec r, Vec impulse)
+{
+  VecCopy(r, _r);
+  VecCopy(r, _r_old);
+  VecCopy(impulse, _impulse);
 }
 
 void LinearNewmark::damping_force(Vec out) const

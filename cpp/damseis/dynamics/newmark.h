@@ -121,6 +121,13 @@ public:
   const EnergyBalance& energy() const { return _energy; }
   /// Takes the sums of a checkpoint (before set_state on restart).
   void set_energy(const EnergyBalance& e) { _energy = e; }
+  /// The damping force a velocity correction left out of balance (C dv),
+  /// for the next step's energy balance.
+  Vec impulse() const { return _impulse; }
+  /// Puts back the constraint force and the impulse of a checkpoint
+  /// (after set_state on restart; the HHT-weighted force of the last step
+  /// is not the state's residual).
+  void set_forces(Vec r, Vec impulse);
 
   Vec u() const { return _x[0]; }
   Vec v() const { return _x[1]; }

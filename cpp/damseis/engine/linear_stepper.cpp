@@ -56,6 +56,9 @@ void LinearStepper::save(Arrays& arrays) const
   const dynamics::EnergyBalance& e = _newmark.energy();
   arrays["energy"] = {e.kinetic0, e.strain0,         e.external_work,
                       e.damping,  e.constraint_work, e.impact};
+  arrays["constraint_force"] =
+      linalg::owned_values(_newmark.constraint_force());
+  arrays["impulse"] = linalg::owned_values(_newmark.impulse());
 }
 
 void LinearStepper::restore(const CheckpointData& data)
@@ -65,6 +68,12 @@ void LinearStepper::restore(const CheckpointData& data)
     _restored[i] = Vector(create_vector(), false);
     linalg::set_owned_values(_restored[i].vec(),
                              checkpoint_array(data, state_names[i]));
+  }
+  for (auto [name, x] : {std::pair{"constraint_force", &_restored_r},
+                         std::pair{"impulse", &_restored_impulse}})
+  {
+    *x = Vector(create_vector(), false);
+    linalg::set_owned_values(x->vec(), checkpoint_array(data, name));
   }
   const std::vector<double> e = checkpoint_array(data, "energy", 6);
   dynamics::EnergyBalance balance;
@@ -82,7 +91,10 @@ void LinearStepper::resume(Vec f)
 {
   _newmark.set_state(_restored[0].vec(), _restored[1].vec(), _restored[2].vec(),
                      f);
+  _newmark.set_forces(_restored_r.vec(), _restored_impulse.vec());
   for (auto& x : _restored)
     x = Vector(nullptr, false);
+  _restored_r = Vector(nullptr, false);
+  _restored_impulse = Vector(nullptr, false);
 }
 } // namespace damseis::engine

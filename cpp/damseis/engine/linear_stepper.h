@@ -47,5 +47,8 @@ private:
   dolfinx::la::petsc::Vector _u_start{nullptr, false}; ///< null: zero
   /// u, v, a read from a checkpoint until resume().
   std::array<dolfinx::la::petsc::Vector, 3> _restored;
+  /// The constraint force and the impulse of the checkpoint.
+  dolfinx::la::petsc::Vector _restored_r{nullptr, false},
+      _restored_impulse{nullptr, false};
 };
 } // namespace damseis::engine

@@ -45,7 +45,7 @@ public:
   const CondensedContact& contact() const { return *_contact; }
   /// NCP iterations of the last step.
   long last_ncp_iterations() const { return _last.ncp_iterations; }
-  /// The contact work of the last step (counts; rank 0 holds them).
+  /// The contact work of the last step (counts, the same on every rank).
   const ContactTotals& last_step() const { return _last; }
 
 private:
