@@ -115,12 +115,16 @@ def plot_face_maps(out: Path, summary: dict, suffix: str, panels, title: str,
         for col, (key, what, extreme) in enumerate(panels):
             ax = axes[row, col]
             # Colour range without the points near the dam-rock contact
-            # lines (singular: growing with refinement); beyond it the
-            # colour saturates.
+            # lines (singular: growing with refinement) and on the joints;
+            # beyond it the colour saturates.
             v = d[key]
             lo, hi = v.min(), v.max()
             if r is not None and "distance_to_singular_m" in d.dtype.names:
                 away = d["distance_to_singular_m"] >= r
+                # Nor the joints' edges, where node-to-node impacts load
+                # single points.
+                if "joint_side" in d.dtype.names:
+                    away &= d["joint_side"] == 0
                 if away.any():
                     lo, hi = v[away].min(), v[away].max()
             extend = ("both" if v.min() < lo and v.max() > hi else
