@@ -14,6 +14,7 @@ from the singular points (principal, arch, cantilever), the crest
 displacement and the energy terms; then the paper's findings (1)-(3)
 against them.
 """
+import csv
 import json
 import sys
 from pathlib import Path
@@ -23,7 +24,9 @@ def runs_of(study: Path):
     for d in sorted(study.glob("joints_*"), key=lambda p: (len(p.name), p.name)):
         f = d / "summary.json"
         if f.exists():
-            yield d.name, json.loads(f.read_text())
+            s = json.loads(f.read_text())
+            s["_dir"] = str(d)
+            yield d.name, s
 
 
 def place(label: str, labels: str) -> str:
@@ -44,6 +47,22 @@ def largest(summary, what):
 def face(summary, f, kind, key="away_from_singular_points"):
     v = summary["faces"][f].get(key, {}).get(kind)
     return None if v is None else v["value"]
+
+
+def off_joints(folder: Path, f: str, radius: float):
+    """Largest tension and compression [MPa] of a face's envelope over the
+    points away from the singular points and off the joints (node-to-node
+    impacts load single points of the joint faces' edges)."""
+    path = folder / f"face_{f}.csv"
+    if not path.exists():
+        return None, None
+    rows = [r for r in csv.DictReader(open(path))
+            if float(r["distance_to_singular_m"]) >= radius
+            and r.get("joint_side", "0") in ("0", "0.0")]
+    if not rows:
+        return None, None
+    return (max(float(r["max_principal_mpa"]) for r in rows),
+            min(float(r["min_principal_mpa"]) for r in rows))
 
 
 def fmt(v, d=2):
@@ -71,10 +90,11 @@ def main() -> None:
                       if isinstance(v, dict)) + "\n")
     print("| case | pairs | largest opening [cm] (joint, place) | largest "
           "sliding [cm] (joint, place) | tension U / D [MPa] | compression "
-          "U / D [MPa] | arch tension U / D | cantilever tension U / D | "
+          "U / D [MPa] | off the joints: tension, compression U / D | arch "
+          "tension U / D | cantilever tension U / D | "
           "crest [cm] | load work [MJ] | joint work [MJ] | impacts [MJ] | removed "
           "by HHT [MJ] |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for n, s in cases:
         j = s.get("joints", {})
         contact = "table" in j and j.get("model") == "contact"
@@ -87,11 +107,15 @@ def main() -> None:
             open_s = slide_s = "-"
         e = s.get("energy", {})
         ac = "arch_cantilever_away_from_singular_points"
+        r = s.get("away_from_singular_points", {}).get("radius_m", 0.0)
+        tu, cu = off_joints(Path(s["_dir"]), "upstream", r)
+        td, cd = off_joints(Path(s["_dir"]), "downstream", r)
         print(f"| {n} | {j.get('pairs', 0)} | {open_s} | {slide_s} | "
               f"{fmt(face(s, 'upstream', 'max_principal_tension_mpa'))} / "
               f"{fmt(face(s, 'downstream', 'max_principal_tension_mpa'))} | "
               f"{fmt(face(s, 'upstream', 'max_principal_compression_mpa'))} / "
               f"{fmt(face(s, 'downstream', 'max_principal_compression_mpa'))} | "
+              f"{fmt(tu)}, {fmt(cu)} / {fmt(td)}, {fmt(cd)} | "
               f"{fmt(face(s, 'upstream', 'arch_tension_mpa', ac))} / "
               f"{fmt(face(s, 'downstream', 'arch_tension_mpa', ac))} | "
               f"{fmt(face(s, 'upstream', 'cantilever_tension_mpa', ac))} / "
@@ -114,13 +138,15 @@ def main() -> None:
             a0, a1 = face(base, f, "arch_tension_mpa", ac), face(most, f, "arch_tension_mpa", ac)
             c0, c1 = (face(base, f, "cantilever_tension_mpa", ac),
                       face(most, f, "cantilever_tension_mpa", ac))
-            k0, k1 = (face(base, f, "max_principal_compression_mpa"),
-                      face(most, f, "max_principal_compression_mpa"))
+            r = base.get("away_from_singular_points", {}).get("radius_m", 0.0)
+            k0 = off_joints(Path(base["_dir"]), f, r)[1]
+            k1 = off_joints(Path(most["_dir"]), f, r)[1]
             if None in (a0, a1, c0, c1, k0, k1):
                 continue
             print(f"- {f} face: arch tension {a0:.2f} -> {a1:.2f} MPa "
                   f"({a1 / a0 - 1:+.0%}), cantilever tension {c0:.2f} -> "
-                  f"{c1:.2f} MPa ({c1 / c0 - 1:+.0%}), compression {k0:.2f} "
+                  f"{c1:.2f} MPa ({c1 / c0 - 1:+.0%}), compression off the "
+                  f"joints {k0:.2f} "
                   f"-> {k1:.2f} MPa ({k1 / k0 - 1:+.0%})")
         print()
 
