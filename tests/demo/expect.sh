@@ -25,3 +25,20 @@ expect() {
     echo "ok   $name: $(cat "$work/stderr")"
   fi
 }
+
+# `expect_no_equilibrium NAME PATTERN ARGS...`: runs "$exe" --out
+# "$work/NAME" ARGS... and checks exit code 4 (a failure found once the run
+# has begun, such as "no static equilibrium"), a stderr matching PATTERN
+# and no summary.json; exits 1 otherwise. Needs $exe and $work.
+expect_no_equilibrium() {
+  local name=$1 pattern=$2
+  shift 2
+  local status=0
+  "$exe" --out "$work/$name" "$@" >/dev/null 2>"$work/$name.err" || status=$?
+  if [ "$status" -ne 4 ] || ! grep -q -- "$pattern" "$work/$name.err" ||
+    [ -e "$work/$name/summary.json" ]; then
+    echo "FAIL $name: exit $status, $(cat "$work/$name.err")"
+    exit 1
+  fi
+  echo "ok   $name: $(cat "$work/$name.err")"
+}
