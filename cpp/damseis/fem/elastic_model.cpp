@@ -307,6 +307,38 @@ Vec ElasticModel::influence(int component) const
   return r;
 }
 
+std::shared_ptr<const dfem::Function<double>>
+ElasticModel::coefficient(const std::string& name) const
+{
+  if (name == "mu")
+    return _mu;
+  if (name == "lmbda")
+    return _lmbda;
+  if (name == "rho")
+    return _rho;
+  throw std::invalid_argument("no material coefficient " + name);
+}
+
+Mat ElasticModel::assemble_facet_matrix(
+    const ufcx_form& form,
+    const std::map<std::string, std::vector<double>>& values,
+    const dolfinx::mesh::MeshTags<std::int32_t>& facets) const
+{
+  std::map<std::string, std::shared_ptr<const dfem::Constant<double>>> c;
+  for (const auto& [name, value] : values)
+    c[name] = std::make_shared<const dfem::Constant<double>>(
+        std::span<const double>(value));
+  auto a = dfem::create_form<double>(
+      form, {_V, _V}, {{"mu", _mu}, {"lmbda", _lmbda}, {"rho", _rho}}, c,
+      {{dfem::IntegralType::exterior_facet, &facets}}, _model.mesh);
+  Mat A = dfem::petsc::create_matrix(a, _matrix_type);
+  MatZeroEntries(A);
+  dfem::assemble_matrix(dolfinx::la::petsc::Matrix::set_block_fn(A, ADD_VALUES),
+                        a, _bcs);
+  finish_matrix(A);
+  return A;
+}
+
 double ElasticModel::region_measure(int region) const
 {
   const auto& mesh = *_model.mesh;

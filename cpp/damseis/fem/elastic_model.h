@@ -133,6 +133,18 @@ public:
   /// elsewhere.
   Vec influence(int component) const;
 
+  /// The cell-wise (DG0) material coefficient "mu", "lmbda" (lambda* in
+  /// plane stress) or "rho".
+  std::shared_ptr<const Function> coefficient(const std::string& name) const;
+  /// The bilinear form `form` on V x V with the material coefficients and
+  /// the scalar or vector constants by name, its exterior-facet integrals
+  /// over subdomain 1 of `facets`, assembled with the fixed dofs' rows and
+  /// columns zero (their diagonal too). Collective.
+  Mat assemble_facet_matrix(
+      const ufcx_form& form,
+      const std::map<std::string, std::vector<double>>& constants,
+      const dolfinx::mesh::MeshTags<std::int32_t>& facets) const;
+
   /// Sum over all ranks of the volume (area in 2D) of cells of `region`.
   double region_measure(int region) const;
 

@@ -1,0 +1,99 @@
+#include "free_field_load.h"
+#include <damseis/linalg/petsc_vectors.h>
+#include <dolfinx/common/IndexMap.h>
+#include <dolfinx/fem/DofMap.h>
+
+namespace damseis::analysis
+{
+using dolfinx::la::petsc::Matrix;
+using dolfinx::la::petsc::Vector;
+
+FreeFieldLoad::FreeFieldLoad(const fem::ElasticModel& fe,
+                             const fem::ViscousBoundary& b,
+                             boundary::VerticalFreeField field, Mat M, Mat K,
+                             dynamics::RayleighDamping damping, double dt,
+                             Vec sustained)
+    : _field(std::move(field)), _M(M), _K(K), _damping(damping), _dt(dt),
+      _dim(fe.dim())
+{
+  _Kb = Matrix(b.springs(), false);
+  _Cb = Matrix(b.dashpots(), false);
+  _T = Matrix(b.traction_operator(), false);
+  if (sustained)
+  {
+    _sustained = linalg::column_vector(K);
+    VecCopy(sustained, _sustained.vec());
+  }
+  for (Vector* v : {&_u_b, &_v_b, &_s_b, &_v_all, &_work})
+    *v = linalg::column_vector(K);
+  const auto& map = *fe.V()->dofmap()->index_map;
+  const std::int32_t n = map.size_local();
+  const std::vector<double> x = fe.V()->tabulate_dof_coordinates(false);
+  _z.resize(n);
+  for (std::int32_t i = 0; i < n; ++i)
+    _z[i] = x[3 * i + _dim - 1];
+  _fixed.assign(n, 0);
+  for (std::int32_t dof : fe.fixed_dofs())
+    if (dof / _dim < n)
+      _fixed[dof / _dim] = 1;
+  for (std::int32_t block : b.blocks())
+    if (block < n)
+      _boundary.push_back(block);
+}
+
+void FreeFieldLoad::assemble(int k, Vec f) const
+{
+  const double t = k * _dt;
+  // The free field on the boundary: displacement, velocity, stresses.
+  double *u = nullptr, *v = nullptr, *s = nullptr, *va = nullptr;
+  VecGetArray(_u_b.vec(), &u);
+  VecGetArray(_v_b.vec(), &v);
+  VecGetArray(_s_b.vec(), &s);
+  for (std::int32_t i : _boundary)
+  {
+    const boundary::FreeFieldState st = _field.at(_z[i], t);
+    for (int c = 0; c < _dim; ++c)
+    {
+      u[i * _dim + c] = st.u[c];
+      v[i * _dim + c] = st.v[c];
+      s[i * _dim + c] = st.s[c];
+    }
+  }
+  VecRestoreArray(_u_b.vec(), &u);
+  VecRestoreArray(_v_b.vec(), &v);
+  VecRestoreArray(_s_b.vec(), &s);
+  // Its velocity at every free node (the damping's reference).
+  VecGetArray(_v_all.vec(), &va);
+  for (std::size_t i = 0; i < _z.size(); ++i)
+  {
+    const std::array<double, 3> w =
+        _fixed[i] ? std::array<double, 3>{} : _field.velocity(_z[i], t);
+    for (int c = 0; c < _dim; ++c)
+      va[i * _dim + c] = w[c];
+  }
+  VecRestoreArray(_v_all.vec(), &va);
+
+  if (_sustained.vec())
+    VecCopy(_sustained.vec(), f);
+  else
+    VecSet(f, 0.0);
+  MatMultAdd(_Kb.mat(), _u_b.vec(), f, f);
+  MatMultAdd(_Cb.mat(), _v_b.vec(), f, f);
+  MatMultAdd(_T.mat(), _s_b.vec(), f, f);
+  if (_damping.a_mass != 0.0)
+  {
+    MatMult(_M, _v_all.vec(), _work.vec());
+    VecAXPY(f, _damping.a_mass, _work.vec());
+  }
+  if (_damping.b_stiffness != 0.0)
+  {
+    MatMult(_K, _v_all.vec(), _work.vec());
+    VecAXPY(f, _damping.b_stiffness, _work.vec());
+  }
+}
+
+void FreeFieldLoad::initial_acceleration(Vec a) const
+{
+  VecSet(a, 0.0);
+}
+} // namespace damseis::analysis

@@ -1,0 +1,61 @@
+// Seismic input as a wave (the absolute formulation of a foundation with
+// mass and a viscous-spring boundary): the free field of vertically
+// incident waves (boundary::VerticalFreeField) enters through the loads
+// that make it an exact solution of the truncated model without the dam
+// (algorithms.md 3.6),
+//   f(t) = F + K_b u_ff + C_b v_ff + T sigma_ff        (boundary)
+//            + (a_M M + b_K K) v_ff                     (all nodes),
+// the last term so that the Rayleigh damping acts on the motion relative to
+// the free field (the scattered field), not on the incident wave, which
+// would otherwise be damped on its way up: C (v - v_ff). On a rigid
+// foundation (v_ff uniform, K v_ff = 0) this is the relative formulation's
+// damping of the massless-foundation model. Above the free surface (the
+// dam) the free field is the surface's motion.
+#pragma once
+
+#include <damseis/boundary/free_field.h>
+#include <damseis/dynamics/newmark.h>
+#include <damseis/engine/parts.h>
+#include <damseis/fem/elastic_model.h>
+#include <damseis/fem/viscous_boundary.h>
+#include <dolfinx/la/petsc.h>
+#include <vector>
+
+namespace damseis::analysis
+{
+class FreeFieldLoad : public engine::DynamicLoad
+{
+public:
+  /// M and K: the system's (K with the boundary's springs), on all dofs
+  /// (no ties); `damping`: the Rayleigh damping of C = a_M M + b_K K
+  /// (+ the dashpots). `sustained`: a load held through the run (copied),
+  /// or null. The matrices must outlive the load.
+  FreeFieldLoad(const fem::ElasticModel& fe, const fem::ViscousBoundary& b,
+                boundary::VerticalFreeField field, Mat M, Mat K,
+                dynamics::RayleighDamping damping, double dt,
+                Vec sustained = nullptr);
+  void assemble(int k, Vec f) const override;
+  /// Zero: the free field starts at rest.
+  void initial_acceleration(Vec a) const override;
+  const boundary::VerticalFreeField& field() const { return _field; }
+
+private:
+  boundary::VerticalFreeField _field;
+  Mat _M, _K;
+  dynamics::RayleighDamping _damping;
+  double _dt;
+  int _dim;
+  dolfinx::la::petsc::Matrix _Kb{nullptr, false}, _Cb{nullptr, false},
+      _T{nullptr, false};
+  dolfinx::la::petsc::Vector _sustained{nullptr, false};
+  /// Owned nodes: the vertical coordinate of each, whether it is fixed,
+  /// and the owned nodes on the boundary.
+  std::vector<double> _z;
+  std::vector<std::int8_t> _fixed;
+  std::vector<std::int32_t> _boundary;
+  /// Work vectors: the free field's u, v, stresses on the boundary and v
+  /// at every node.
+  dolfinx::la::petsc::Vector _u_b{nullptr, false}, _v_b{nullptr, false},
+      _s_b{nullptr, false}, _v_all{nullptr, false}, _work{nullptr, false};
+};
+} // namespace damseis::analysis

@@ -1,0 +1,176 @@
+#include "free_field.h"
+#include <algorithm>
+#include <cmath>
+#include <damseis/motion/baseline.h>
+#include <damseis/motion/spectrum.h>
+#include <stdexcept>
+
+namespace damseis::boundary
+{
+namespace
+{
+/// Whether the final velocity and displacement of a record are within
+/// 1e-3 of their peaks.
+bool ends_at_rest(const std::vector<double>& a, double dt)
+{
+  if (a.empty())
+    return true;
+  std::vector<double> v, d;
+  motion::integrate(a, dt, v, d);
+  auto peak = [](const std::vector<double>& x)
+  {
+    double m = 0.0;
+    for (double y : x)
+      m = std::max(m, std::abs(y));
+    return m;
+  };
+  return std::abs(v.back()) <= 1e-3 * peak(v) &&
+         std::abs(d.back()) <= 1e-3 * peak(d);
+}
+} // namespace
+
+SampledMotion::SampledMotion(std::vector<double> a, double dt, double t_start)
+    : _a(std::move(a)), _dt(dt), _t0(t_start)
+{
+  if (!(dt > 0.0))
+    throw std::invalid_argument("sampled motion: dt must be > 0");
+  const std::size_t n = _a.size();
+  _v.assign(n, 0.0);
+  _d.assign(n, 0.0);
+  for (std::size_t k = 1; k < n; ++k)
+  {
+    _v[k] = _v[k - 1] + 0.5 * dt * (_a[k - 1] + _a[k]);
+    _d[k] =
+        _d[k - 1] + dt * _v[k - 1] + dt * dt * (_a[k - 1] / 3.0 + _a[k] / 6.0);
+  }
+}
+
+std::size_t SampledMotion::interval(double t, double& tau) const
+{
+  const double s = (t - _t0) / _dt;
+  const std::size_t last = _a.size() - 1;
+  std::size_t k = static_cast<std::size_t>(std::floor(s));
+  if (k >= last)
+  {
+    tau = (s - static_cast<double>(last)) * _dt;
+    return last;
+  }
+  tau = (s - static_cast<double>(k)) * _dt;
+  return k;
+}
+
+double SampledMotion::acceleration(double t) const
+{
+  if (_a.empty() || t <= _t0)
+    return 0.0;
+  double tau = 0.0;
+  const std::size_t k = interval(t, tau);
+  if (k + 1 >= _a.size())
+    return tau == 0.0 ? _a[k] : 0.0;
+  return _a[k] + (_a[k + 1] - _a[k]) * tau / _dt;
+}
+
+double SampledMotion::velocity(double t) const
+{
+  if (_a.empty() || t <= _t0)
+    return 0.0;
+  double tau = 0.0;
+  const std::size_t k = interval(t, tau);
+  if (k + 1 >= _a.size())
+    return _v[k];
+  const double da = (_a[k + 1] - _a[k]) / _dt;
+  return _v[k] + _a[k] * tau + 0.5 * da * tau * tau;
+}
+
+double SampledMotion::displacement(double t) const
+{
+  if (_a.empty() || t <= _t0)
+    return 0.0;
+  double tau = 0.0;
+  const std::size_t k = interval(t, tau);
+  if (k + 1 >= _a.size())
+    return _d[k] + _v[k] * tau;
+  const double da = (_a[k + 1] - _a[k]) / _dt;
+  return _d[k] + _v[k] * tau + 0.5 * _a[k] * tau * tau +
+         da * tau * tau * tau / 6.0;
+}
+
+VerticalFreeField::VerticalFreeField(const Rock& rock, int dim, double z_base,
+                                     double z_surface,
+                                     std::array<SampledMotion, 3> incident)
+    : _rock(rock), _dim(dim), _zb(z_base), _zs(z_surface),
+      _incident(std::move(incident))
+{
+  if (dim != 2 && dim != 3)
+    throw std::invalid_argument("free field: dimension 2 or 3");
+  if (!(z_surface > z_base))
+    throw std::invalid_argument(
+        "free field: the free surface must be above the base");
+  if (!(rock.rho > 0.0) || !(rock.E > 0.0))
+    throw std::invalid_argument("free field: the rock needs E > 0, rho > 0");
+}
+
+VerticalFreeField VerticalFreeField::from_outcrop(
+    const Rock& rock, int dim, double z_base, double z_surface,
+    const std::array<std::vector<double>, 3>& outcrop, double dt)
+{
+  std::array<SampledMotion, 3> incident;
+  std::array<bool, 3> corrected{};
+  const double depth = z_surface - z_base;
+  for (int i = 0; i < dim; ++i)
+  {
+    if (outcrop[i].empty())
+      continue;
+    std::vector<double> a = outcrop[i];
+    if (!ends_at_rest(a, dt) && a.size() >= 8)
+    {
+      motion::remove_displacement_trend(a, dt);
+      corrected[i] = true;
+    }
+    for (double& x : a)
+      x *= 0.5;
+    const double c = i == dim - 1 ? rock.cp() : rock.cs();
+    const double delay = depth * (1.0 / rock.cs() - 1.0 / c);
+    incident[i] = SampledMotion(std::move(a), dt, delay);
+  }
+  VerticalFreeField f(rock, dim, z_base, z_surface, std::move(incident));
+  f._corrected = corrected;
+  return f;
+}
+
+FreeFieldState VerticalFreeField::at(double z, double t) const
+{
+  FreeFieldState s;
+  const double zc = std::min(z, _zs);
+  for (int i = 0; i < _dim; ++i)
+  {
+    const SampledMotion& w = _incident[i];
+    if (w.empty())
+      continue;
+    const double c = speed(i);
+    const double t_up = t - (zc - _zb) / c;
+    const double t_dn = t - (2.0 * _zs - zc - _zb) / c;
+    s.u[i] = w.displacement(t_up) + w.displacement(t_dn);
+    const double v_up = w.velocity(t_up), v_dn = w.velocity(t_dn);
+    s.v[i] = v_up + v_dn;
+    s.s[i] = _rock.rho * c * (v_dn - v_up);
+  }
+  return s;
+}
+
+std::array<double, 3> VerticalFreeField::velocity(double z, double t) const
+{
+  std::array<double, 3> v{};
+  const double zc = std::min(z, _zs);
+  for (int i = 0; i < _dim; ++i)
+  {
+    const SampledMotion& w = _incident[i];
+    if (w.empty())
+      continue;
+    const double c = speed(i);
+    v[i] = w.velocity(t - (zc - _zb) / c) +
+           w.velocity(t - (2.0 * _zs - zc - _zb) / c);
+  }
+  return v;
+}
+} // namespace damseis::boundary

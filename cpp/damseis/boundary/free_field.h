@@ -1,0 +1,100 @@
+// The free field of vertically incident plane waves in a homogeneous
+// elastic half-space (algorithms.md 3.6): an S wave for each horizontal
+// component, a P wave for the vertical one, each reflected at the free
+// surface z_s. With the incident displacement u_I(t) at the base z_b,
+//   u(z, t)       = u_I(t - tau_up) + u_I(t - tau_dn),
+//   sigma_iz(z,t) = rho c [-v_I(t - tau_up) + v_I(t - tau_dn)],
+//   tau_up = (z - z_b) / c,  tau_dn = (2 z_s - z - z_b) / c,
+// c = c_s for the horizontal components (sigma_xz, sigma_yz) and c_p for
+// the vertical one (sigma_zz; sigma_xx = sigma_yy = lambda / (lambda + 2G)
+// sigma_zz). The stress vanishes at z_s and the surface moves with twice
+// the incident wave.
+//
+// Input (from_outcrop): the design record is the motion of the free
+// surface (the outcrop). Each component's incident wave is half of it,
+// delayed so that the three components arrive at the surface together,
+// as recorded, one S-wave travel time (z_s - z_b) / c_s after t = 0:
+//   u_I(t) = 1/2 u_s(t - (z_s - z_b) (1/c_s - 1/c)),
+// and the surface moves as u_s(t - (z_s - z_b) / c_s). The model starts at
+// rest. The record's velocity and displacement are integrated exactly for
+// the piecewise-linear acceleration; a record that does not end at rest
+// (final velocity or displacement above 1e-3 of its peak) is first
+// baseline corrected (motion::remove_displacement_trend), so that the wave
+// ends at rest.
+#pragma once
+
+#include "viscous_spring.h"
+#include <array>
+#include <vector>
+
+namespace damseis::boundary
+{
+/// One sampled motion: acceleration linear between samples, velocity and
+/// displacement its exact integrals, evaluated at any time (at rest
+/// before the start; after the end, the last acceleration's motion is
+/// not continued: the velocity stays and the displacement moves with it).
+class SampledMotion
+{
+public:
+  SampledMotion() = default;
+  /// From rest at t = t_start: a(t_start + k dt) = a[k].
+  SampledMotion(std::vector<double> a, double dt, double t_start = 0.0);
+  double displacement(double t) const;
+  double velocity(double t) const;
+  double acceleration(double t) const;
+  bool empty() const { return _a.empty(); }
+
+private:
+  /// The sample interval of t and the time into it.
+  std::size_t interval(double t, double& tau) const;
+  std::vector<double> _a, _v, _d;
+  double _dt = 0.0, _t0 = 0.0;
+};
+
+/// The state of the free field at a point: displacement, velocity and the
+/// stresses on horizontal planes, per component (the last component is
+/// the vertical one): s[i] = sigma_{i,z} (s[dim-1] = sigma_zz).
+struct FreeFieldState
+{
+  std::array<double, 3> u{}, v{}, s{};
+};
+
+class VerticalFreeField
+{
+public:
+  /// `incident`: the incident wave's acceleration at the base per
+  /// component (empty: none), sampled at dt. `z_base` < `z_surface`.
+  VerticalFreeField(const Rock& rock, int dim, double z_base, double z_surface,
+                    std::array<SampledMotion, 3> incident);
+
+  /// The free field whose free surface moves with the outcrop motion
+  /// `outcrop` (accelerations per component, empty: none; m/s2 at k dt),
+  /// delayed by surface_delay(): see the file's comment.
+  static VerticalFreeField
+  from_outcrop(const Rock& rock, int dim, double z_base, double z_surface,
+               const std::array<std::vector<double>, 3>& outcrop, double dt);
+  /// Whether from_outcrop corrected the baseline of component i.
+  bool baseline_corrected(int i) const { return _corrected[i]; }
+
+  /// The state at height z (<= z_surface; above it, the surface's) and
+  /// time t.
+  FreeFieldState at(double z, double t) const;
+  /// The velocity alone (cheaper).
+  std::array<double, 3> velocity(double z, double t) const;
+
+  /// The wave speed of component i (c_s horizontal, c_p vertical).
+  double speed(int i) const { return i == _dim - 1 ? _rock.cp() : _rock.cs(); }
+  /// How much later the surface moves than the outcrop record.
+  double surface_delay() const { return (_zs - _zb) / _rock.cs(); }
+  const Rock& rock() const { return _rock; }
+  double z_base() const { return _zb; }
+  double z_surface() const { return _zs; }
+
+private:
+  Rock _rock;
+  int _dim;
+  double _zb, _zs;
+  std::array<SampledMotion, 3> _incident;
+  std::array<bool, 3> _corrected{};
+};
+} // namespace damseis::boundary
