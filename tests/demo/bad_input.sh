@@ -70,6 +70,11 @@ expect base_point_outside 'koyna\.toml.*output\.base_point.*outside the model' -
 expect key_nested_deep 'deep\.toml:1.*nested 50000 levels' --case "$work/deep.toml"
 expect mesh_too_fine 'koyna\.toml.*mesh\.size.*estimated.*mesh\.max_cells' --set mesh.size=0.01
 expect mesh_size_implausible 'koyna\.toml.*mesh\.size.*0\.001 <= size' --set mesh.size=5e-324
+# The viscous-spring foundation (issue 20).
+expect viscous_spring_without_block 'koyna\.toml.*foundation\.boundary.*foundation\.enabled = true' --set foundation.boundary=viscous_spring
+expect viscous_spring_with_htc 'koyna\.toml.*foundation\.boundary.*HTC' --set foundation.enabled=true --set foundation.boundary=viscous_spring --set material.model=plastic
+expect unknown_boundary 'koyna\.toml.*foundation\.boundary' --set foundation.enabled=true --set foundation.boundary=mtf
+expect rock_density_implausible 'koyna\.toml.*foundation\.rho' --set foundation.enabled=true --set foundation.boundary=viscous_spring --set foundation.rho=0
 
 if [ "$failures" -ne 0 ]; then
   echo "$failures bad-input checks failed"; exit 1

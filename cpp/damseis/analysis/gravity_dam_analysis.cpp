@@ -95,10 +95,12 @@ GravityDamModel gravity_dam_model(MPI_Comm comm, const GravityDamConfig& cfg,
                                       ? out_dir / "model.msh"
                                       : std::filesystem::path()),
       cfg.order, section_materials(cfg), cfg.plane);
-  if (foundation)
-    m.fe->fix({tags::foundation_bottom, tags::foundation_sides});
-  else
+  // A massless block is fixed at its far boundary; a block with a
+  // viscous-spring boundary is held by its springs.
+  if (!foundation)
     m.fe->fix({tags::dam_base});
+  else if (!cfg.wave)
+    m.fe->fix({tags::foundation_bottom, tags::foundation_sides});
   if (cfg.silt.level > 0.0)
     m.silt_and_uplift.emplace_back(fem::assemble_silt(*m.fe, cfg.silt), false);
   if (cfg.uplift_on)
@@ -115,7 +117,8 @@ gravity_dam_seismic_analysis(GravityDamModel& model,
   if (cfg.concrete_model.kind == ConcreteModelKind::linear)
   {
     return linear_seismic_analysis(*model.fe, cfg.seismic,
-                                   {model.static_loads()}, folder);
+                                   {model.static_loads()}, folder, nullptr,
+                                   nullptr, cfg.wave ? &*cfg.wave : nullptr);
   }
   // The regions other than the dam stay linear elastic.
   return concrete_seismic_analysis(
@@ -135,7 +138,9 @@ nlohmann::json gravity_dam_results(MPI_Comm comm, const GravityDamConfig& cfg,
           : "gravity dam section, HTC concrete (" + to_string(kind) + ")";
   summary["plane"] = cfg.plane == fem::PlaneMode::plane_stress ? "plane_stress"
                                                                : "plane_strain";
-  summary["base"] = cfg.section.foundation ? "massless foundation" : "rigid";
+  summary["base"] = !cfg.section.foundation ? "rigid"
+                    : cfg.wave ? "foundation with mass, viscous-spring boundary"
+                               : "massless foundation";
   summary["dam_E_pa"] = cfg.concrete_model.params.E;
   summary["dam_E_factor"] = cfg.concrete_model.applied.E;
   summary["silt_level_m"] = cfg.silt.level;

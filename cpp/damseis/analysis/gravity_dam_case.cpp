@@ -58,7 +58,24 @@ input::Schema gravity_dam_schema()
             "also write the model as model.msh (gmsh, physical groups named "
             "dam, foundation, upstream_face, dam_base, ...)");
   s.boolean("foundation.enabled", "false", "-",
-            "massless foundation block (else a rigid base)");
+            "foundation block (else a rigid base)");
+  s.string("foundation.boundary", "fixed", "-",
+           "fixed: massless block fixed at its sides and bottom, the ground "
+           "motion as base acceleration; viscous_spring: the block with "
+           "mass (foundation.rho) and a viscous-spring boundary, the ground "
+           "motion as the outcrop motion of vertically incident waves",
+           {"fixed", "viscous_spring"});
+  s.real("foundation.rho", "2640", "kg/m3",
+         "mass density of the rock (with boundary = viscous_spring; the "
+         "fixed block is massless)")
+      .between(100, 20000);
+  s.real("foundation.spring_normal", "1.0", "-",
+         "viscous-spring boundary: normal spring alpha_n G / R (R from the "
+         "middle of the dam base)")
+      .between(0, 10);
+  s.real("foundation.spring_tangential", "0.5", "-",
+         "viscous-spring boundary: tangential spring alpha_t G / R")
+      .between(0, 10);
   s.real("foundation.width", "300.0", "m",
          "width of the foundation block, centred on the dam base")
       .above(0)
@@ -158,6 +175,11 @@ GravityDamConfig read_gravity_dam_config(const input::Case& c)
     c.fail("foundation.mesh_size", "is finer than a tenth of mesh.size",
            "0 (2.5 x mesh.size) or a size at least mesh.size / 10");
   geometry::check_cell_estimate(c, geometry::estimated_cells(s));
+  const bool viscous_spring =
+      c.string("foundation.boundary") == "viscous_spring";
+  if (viscous_spring && !s.foundation)
+    c.fail("foundation.boundary", "needs a foundation block",
+           "foundation.enabled = true");
 
   g.seismic = read_seismic_settings(c, gravity_dam_directions(), 2, s.crest_y,
                                     {s.heel_x, s.crest_y, 0.0},
@@ -203,6 +225,26 @@ GravityDamConfig read_gravity_dam_config(const input::Case& c)
   if (g.uplift_on && g.uplift.head_downstream > g.uplift.head_upstream)
     c.fail("uplift.tailwater", "is above the reservoir",
            "a tailwater below reservoir.level");
+  if (viscous_spring)
+  {
+    if (g.concrete_model.kind != ConcreteModelKind::linear)
+      c.fail("foundation.boundary",
+             "viscous_spring is not yet available with HTC concrete",
+             "material.model = \"linear\" or foundation.boundary = "
+             "\"fixed\"");
+    g.rock.rho = c.real("foundation.rho");
+    WaveFoundation w;
+    w.boundary_tags = {tags::foundation_bottom, tags::foundation_sides};
+    w.centre = {0.5 * (s.heel_x + s.toe_x), s.base_y, 0.0};
+    w.factors = {c.real("foundation.spring_normal"),
+                 c.real("foundation.spring_tangential")};
+    w.rock = {g.rock.E, g.rock.nu, g.rock.rho,
+              g.plane == fem::PlaneMode::plane_stress};
+    w.z_base = s.base_y - s.foundation_depth;
+    w.z_surface = s.base_y;
+    g.wave = w;
+    g.seismic.gravity_regions = {tags::dam};
+  }
   g.seismic.faces = {{"upstream", {tags::upstream_face}},
                      {"downstream", {tags::downstream_face}}};
   // The section counterclockwise from the heel: heel and toe are singular

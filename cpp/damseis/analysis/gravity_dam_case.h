@@ -4,10 +4,12 @@
 
 #include "concrete_settings.h"
 #include "seismic_settings.h"
+#include "wave_foundation.h"
 #include <damseis/fem/elastic_model.h>
 #include <damseis/fem/gravity_dam_loads.h>
 #include <damseis/geometry/gravity_dam.h>
 #include <damseis/input/case.h>
+#include <optional>
 
 namespace damseis::analysis
 {
@@ -21,6 +23,10 @@ struct GravityDamConfig
   /// concrete_model.params.E, with its dynamic factor).
   fem::Material concrete;
   fem::Material rock; ///< foundation (massless: rho = 0)
+  /// A foundation with mass and a viscous-spring boundary (the seismic
+  /// input as vertically incident waves), or none (massless, fixed at its
+  /// far boundary).
+  std::optional<WaveFoundation> wave;
   SeismicSettings seismic;
   /// Dam concrete model (linear engine or HTC elastic/plastic/viscoplastic)
   /// with the dynamic factors of that model.

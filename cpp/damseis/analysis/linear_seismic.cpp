@@ -2,6 +2,7 @@
 #include "energy_recorder.h"
 #include "engine_settings.h"
 #include "face_direction_recorder.h"
+#include "free_field_load.h"
 #include "ground_motion_load.h"
 #include "initial_motion.h"
 #include "modal_stage.h"
@@ -16,6 +17,7 @@
 #include <damseis/fem/facet_dofs.h>
 #include <damseis/fem/prolongation.h>
 #include <damseis/fem/tied_dofs.h>
+#include <damseis/fem/viscous_boundary.h>
 #include <damseis/geometry/tags.h>
 #include <damseis/joint/contact_stepper.h>
 #include <damseis/joint/joint_recorder.h>
@@ -54,7 +56,8 @@ class LinearSeismicAnalysis : public SeismicAnalysis
 public:
   LinearSeismicAnalysis(fem::ElasticModel& fe, const SeismicSettings& s,
                         const ModelLoads& loads, RunFolder folder, Mat tie,
-                        const ContactJoints* contact);
+                        const ContactJoints* contact,
+                        const WaveFoundation* wave);
   void modal_stage() override;
   void static_stage() override;
   void time_history() override;
@@ -70,6 +73,12 @@ private:
   void set_up_contact(SeismicSystem& sys);
   /// The modal stage of a model with contact joints: on the joints closed.
   void modal_stage_closed_joints();
+  /// A wave foundation: the boundary's springs into K, its dashpots kept
+  /// for the damping, the free field of the ground motion.
+  void set_up_wave_foundation(Mat K);
+  /// The seismic load: the free field's (wave foundation) or the base
+  /// acceleration's, with `sustained` held.
+  std::unique_ptr<engine::DynamicLoad> seismic_load(Vec sustained) const;
   /// The faces of the output settings as pair faces (joint tables).
   std::vector<joint::PairFace> pair_faces() const;
   std::vector<std::vector<std::int8_t>> face_joint_sides() const;
@@ -80,7 +89,11 @@ private:
   RunFolder _folder;
   Mat _tie;
   const ContactJoints* _contact; ///< null: no contact joints
-  Mat _modal_tie = nullptr;      ///< with contact: the joints bonded
+  const WaveFoundation* _wave;   ///< null: massless foundation
+  std::unique_ptr<fem::ViscousBoundary> _boundary;
+  Matrix _dashpots{nullptr, false};
+  std::optional<boundary::VerticalFreeField> _free_field;
+  Mat _modal_tie = nullptr; ///< with contact: the joints bonded
   Matrix _K_bonded{nullptr, false}, _M_bonded{nullptr, false};
   Matrix _mpc{nullptr, false}; ///< P2 contact: the midside constraints
   std::optional<joint::PairSet> _pairs;
@@ -120,9 +133,10 @@ LinearSeismicAnalysis::LinearSeismicAnalysis(fem::ElasticModel& fe,
                                              const SeismicSettings& s,
                                              const ModelLoads& loads,
                                              RunFolder folder, Mat tie,
-                                             const ContactJoints* contact)
+                                             const ContactJoints* contact,
+                                             const WaveFoundation* wave)
     : _fe(fe), _s(s), _loads(loads), _folder(std::move(folder)),
-      _tie(contact ? nullptr : tie), _contact(contact),
+      _tie(contact ? nullptr : tie), _contact(contact), _wave(wave),
       _modal_tie(contact ? tie : nullptr), _comm(fe.mesh()->comm())
 {
   results::set_stage("assembly");
@@ -132,6 +146,8 @@ LinearSeismicAnalysis::LinearSeismicAnalysis(fem::ElasticModel& fe,
   SeismicSystem sys =
       assemble_seismic_system(fe, s, loads.static_loads, _tie, false);
   _added = sys.added;
+  if (_wave)
+    set_up_wave_foundation(sys.K.mat());
   if (_contact)
     set_up_contact(sys);
   _K = std::move(sys.K);
@@ -140,6 +156,43 @@ LinearSeismicAnalysis::LinearSeismicAnalysis(fem::ElasticModel& fe,
   _F_g = std::move(sys.F_g);
   _u_static = linalg::column_vector(_K.mat());
   _static_seconds = seconds_since(_wall_start);
+}
+
+void LinearSeismicAnalysis::set_up_wave_foundation(Mat K)
+{
+  if (_tie || _contact || _loads.initial_velocity)
+    throw std::invalid_argument(
+        "a foundation with a viscous-spring boundary does not yet take "
+        "bonded or contact joints or an initial velocity");
+  _boundary = std::make_unique<fem::ViscousBoundary>(
+      _fe, *_fe.model().facet_tags, _wave->boundary_tags, _wave->centre,
+      _wave->factors);
+  Matrix springs(_boundary->springs(), false);
+  MatAXPY(K, 1.0, springs.mat(), SUBSET_NONZERO_PATTERN);
+  _dashpots = Matrix(_boundary->dashpots(), false);
+  std::array<std::vector<double>, 3> outcrop;
+  for (int c = 0; c < _fe.dim(); ++c)
+    if (_s.motion[c].active)
+      outcrop[c] = _s.motion[c].acceleration;
+  _free_field = boundary::VerticalFreeField::from_outcrop(
+      _wave->rock, _fe.dim(), _wave->z_base, _wave->z_surface, outcrop,
+      _s.scheme.dt);
+  results::print(_comm, "foundation with mass, viscous-spring boundary (" +
+                            std::to_string(_boundary->measure()) +
+                            " m), vertically incident waves: the surface "
+                            "moves with the record " +
+                            std::to_string(_free_field->surface_delay()) +
+                            " s late");
+}
+
+std::unique_ptr<engine::DynamicLoad>
+LinearSeismicAnalysis::seismic_load(Vec sustained) const
+{
+  if (_wave)
+    return std::make_unique<FreeFieldLoad>(_fe, *_boundary, *_free_field,
+                                           _M.mat(), _K.mat(), _modal->damping,
+                                           _s.scheme.dt, sustained);
+  return std::make_unique<GroundMotionLoad>(_fe, _s, _M.mat(), _tie, sustained);
 }
 
 void LinearSeismicAnalysis::set_up_contact(SeismicSystem& sys)
@@ -268,13 +321,17 @@ void LinearSeismicAnalysis::time_history()
   }
   else
   {
+    std::vector<Mat> dashpots;
+    if (_dashpots.mat())
+      dashpots.push_back(_dashpots.mat());
     _stepper = std::make_unique<engine::LinearStepper>(
-        _M.mat(), _K.mat(), _modal->damping, _s.scheme, _s.factorization);
+        _M.mat(), _K.mat(), _modal->damping, _s.scheme, _s.factorization,
+        dashpots);
   }
-  const GroundMotionLoad ground(_fe, _s, _M.mat(), _tie,
-                                _contact ? _F.vec() : nullptr);
+  const std::unique_ptr<engine::DynamicLoad> ground =
+      seismic_load(_contact ? _F.vec() : nullptr);
   // Tractions with their histories on top of the ground motion's load.
-  const LoadWithTimedTerms load(ground, _loads.timed, _tie);
+  const LoadWithTimedTerms load(*ground, _loads.timed, _tie);
 
   // Outputs: every input check has passed by now.
   open_run_folder(_comm, _folder);
@@ -533,6 +590,9 @@ json LinearSeismicAnalysis::results()
         gaps[j.label] = j.initial_gap;
     summary["joints"]["initial_gap_m"] = gaps;
   }
+  if (_wave)
+    summary["foundation"] =
+        wave_foundation_summary(*_wave, *_free_field, _boundary->measure());
   summary["wall_seconds"] = seconds_since(_wall_start);
   print_summary_line(_comm, summary);
   return summary;
@@ -542,13 +602,38 @@ json LinearSeismicAnalysis::results()
 std::unique_ptr<SeismicAnalysis>
 linear_seismic_analysis(fem::ElasticModel& fe, const SeismicSettings& s,
                         const ModelLoads& loads, const RunFolder& folder,
-                        Mat tie, const ContactJoints* contact)
+                        Mat tie, const ContactJoints* contact,
+                        const WaveFoundation* wave)
 {
   if (contact && !tie)
     throw std::invalid_argument("contact joints need the tie of the same "
                                 "joints for the modal stage");
   return std::make_unique<LinearSeismicAnalysis>(fe, s, loads, folder, tie,
-                                                 contact);
+                                                 contact, wave);
+}
+
+nlohmann::json wave_foundation_summary(const WaveFoundation& wave,
+                                       const boundary::VerticalFreeField& f,
+                                       double boundary_measure)
+{
+  nlohmann::json corrected = nlohmann::json::array();
+  for (int i = 0; i < 3; ++i)
+    corrected.push_back(f.baseline_corrected(i));
+  return {{"model", "mass, viscous-spring boundary, vertically incident "
+                    "waves (free field of a homogeneous half-space)"},
+          {"boundary_measure_m", boundary_measure},
+          {"spring_factors", {wave.factors.normal, wave.factors.tangential}},
+          {"scattering_centre_m", wave.centre},
+          {"rock",
+           {{"E_pa", wave.rock.E},
+            {"nu", wave.rock.nu},
+            {"rho_kg_m3", wave.rock.rho},
+            {"cp_m_s", wave.rock.cp()},
+            {"cs_m_s", wave.rock.cs()}}},
+          {"z_base_m", wave.z_base},
+          {"z_surface_m", wave.z_surface},
+          {"surface_delay_s", f.surface_delay()},
+          {"record_baseline_corrected", corrected}};
 }
 } // namespace damseis::analysis
 

@@ -8,6 +8,7 @@
 #include "seismic_analysis.h"
 #include "seismic_settings.h"
 #include "timed_loads.h"
+#include "wave_foundation.h"
 #include <damseis/fem/elastic_model.h>
 #include <damseis/joint/pairs.h>
 #include <damseis/joint/static_contact.h>
@@ -64,11 +65,19 @@ struct ContactJoints
 /// to the ground motion's in the time history; with an initial velocity
 /// the initial acceleration satisfies M a = f - C v (at the dofs with
 /// mass).
+///
+/// With `wave`, the foundation has mass and a viscous-spring boundary on
+/// the facets it names (`fe` has no fixed dofs there), and the ground
+/// motion is the outcrop motion of vertically incident waves: the state is
+/// absolute (the displacements include the ground's) and the load is the
+/// free field's (analysis/free_field_load); the Rayleigh damping acts on
+/// the motion relative to the free field. Not yet with ties or contact.
 std::unique_ptr<SeismicAnalysis>
 linear_seismic_analysis(fem::ElasticModel& fe, const SeismicSettings& settings,
                         const ModelLoads& loads, const RunFolder& folder,
                         Mat tie = nullptr,
-                        const ContactJoints* contact = nullptr);
+                        const ContactJoints* contact = nullptr,
+                        const WaveFoundation* wave = nullptr);
 
 /// All phases of that analysis; returns the summary.
 inline nlohmann::json run_linear_seismic(fem::ElasticModel& fe,
@@ -79,6 +88,11 @@ inline nlohmann::json run_linear_seismic(fem::ElasticModel& fe,
 {
   return linear_seismic_analysis(fe, settings, loads, folder, tie)->run();
 }
+
+/// The summary's description of a wave foundation (boundary, rock, input).
+nlohmann::json wave_foundation_summary(const WaveFoundation& wave,
+                                       const boundary::VerticalFreeField& f,
+                                       double boundary_measure);
 } // namespace damseis::analysis
 
 namespace damseis::analysis

@@ -53,6 +53,10 @@ struct SeismicSettings
   /// The cell tags of the dam (stress envelopes): geometry::tags::dam in
   /// the built models, the user's groups in dam_model.
   std::vector<int> dam_regions = {1};
+  /// The cells the dead weight acts on (empty: all). A foundation with
+  /// mass carries its own weight before the dam is built: only the dam's
+  /// loads it (the dam_regions).
+  std::vector<int> gravity_regions;
   /// Named groups (cells or facets, tagged `tag` in `tags`) whose mean
   /// displacement, velocity and acceleration are recorded
   /// (group_histories.csv).

@@ -46,7 +46,7 @@ SeismicSystem assemble_seismic_system(fem::ElasticModel& fe,
   }
   std::array<double, 3> g = {0, 0, 0};
   g[fe.dim() - 1] = -s.gravity;
-  Vector F_g(fe.assemble_gravity(g), false);
+  Vector F_g(fe.assemble_gravity(g, s.gravity_regions), false);
   Vector F = system_vector(F_g.vec(), nullptr); // a copy
   if (wet)
   {

@@ -127,10 +127,11 @@ ElasticModel::constants(const Reservoir* r,
 std::shared_ptr<dfem::Form<double>> ElasticModel::make_form(
     ufcx_form* form, std::vector<std::shared_ptr<const FunctionSpace>> spaces,
     const Reservoir* reservoir, const std::array<double, 3>& g,
-    std::shared_ptr<const Function> u) const
+    std::shared_ptr<const Function> u,
+    std::shared_ptr<const Function> rho) const
 {
   std::map<std::string, std::shared_ptr<const Function>> coefficients = {
-      {"mu", _mu}, {"lmbda", _lmbda}, {"rho", _rho}};
+      {"mu", _mu}, {"lmbda", _lmbda}, {"rho", rho ? rho : _rho}};
   if (u)
     coefficients["u"] = u;
   const std::map<dfem::IntegralType, const dolfinx::mesh::MeshTags<int>*>
@@ -203,9 +204,26 @@ Vec ElasticModel::assemble_load(const dfem::Form<double>& L,
   return b;
 }
 
-Vec ElasticModel::assemble_gravity(const std::array<double, 3>& g) const
+Vec ElasticModel::assemble_gravity(const std::array<double, 3>& g,
+                                   const std::vector<int>& regions) const
 {
-  return assemble_load(*make_form(_forms.L_gravity, {_V}, nullptr, g), true);
+  if (regions.empty())
+    return assemble_load(*make_form(_forms.L_gravity, {_V}, nullptr, g), true);
+  // The density on the cells of `regions`, zero elsewhere.
+  auto rho = std::make_shared<Function>(_rho->function_space());
+  std::span<const double> all = _rho->x()->array();
+  std::span<double> some = rho->x()->mutable_array();
+  const auto& tags = *_model.cell_tags;
+  const auto& dofmap = *_rho->function_space()->dofmap();
+  for (std::size_t i = 0; i < tags.indices().size(); ++i)
+    if (std::find(regions.begin(), regions.end(), tags.values()[i]) !=
+        regions.end())
+    {
+      const std::int32_t dof = dofmap.cell_dofs(tags.indices()[i])[0];
+      some[dof] = all[dof];
+    }
+  return assemble_load(
+      *make_form(_forms.L_gravity, {_V}, nullptr, g, nullptr, rho), true);
 }
 
 Vec ElasticModel::assemble_gravity_free(const std::array<double, 3>& g) const

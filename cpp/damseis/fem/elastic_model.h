@@ -99,8 +99,10 @@ public:
   /// rows and columns zero (including the diagonal).
   Mat assemble_mass(const Reservoir* reservoir) const;
   /// Dead-weight load for the body acceleration `g` [m/s2]; zero at fixed
-  /// dofs.
-  Vec assemble_gravity(const std::array<double, 3>& g) const;
+  /// dofs. With `regions` (cell tags), on those cells only (the dam's,
+  /// where the foundation's own weight is not a load on the dam).
+  Vec assemble_gravity(const std::array<double, 3>& g,
+                       const std::vector<int>& regions = {}) const;
   /// Hydrostatic load of the reservoir; zero at fixed dofs.
   Vec assemble_hydrostatic(const Reservoir& reservoir) const;
   /// A load of another compiled linear form on V (e.g.
@@ -156,7 +158,8 @@ private:
             std::vector<std::shared_ptr<const FunctionSpace>> spaces,
             const Reservoir* reservoir = nullptr,
             const std::array<double, 3>& g = {0, 0, 0},
-            std::shared_ptr<const Function> u = nullptr) const;
+            std::shared_ptr<const Function> u = nullptr,
+            std::shared_ptr<const Function> rho = nullptr) const;
   Vec assemble_load(const dolfinx::fem::Form<double>& L, bool apply_bc) const;
 
   geometry::Model _model;
