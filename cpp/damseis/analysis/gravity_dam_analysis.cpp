@@ -1,4 +1,5 @@
 #include "gravity_dam_analysis.h"
+#include "foundation_study.h"
 #include "linear_seismic.h"
 #include "nonlinear_seismic.h"
 #include "run_outputs.h"
@@ -157,6 +158,8 @@ nlohmann::json run_gravity_dam_study(MPI_Comm comm, const GravityDamConfig& cfg,
 {
   print_size_estimate(comm, geometry::estimated_cells(cfg.section), 2,
                       cfg.order, cfg.seismic.steps);
+  if (!cfg.table6_ratios.empty())
+    return run_foundation_study(comm, cfg, out_dir, case_text, analyse);
   if (!cfg.table1)
     return analyse(comm, cfg, {out_dir, case_text});
   std::vector<std::pair<std::string, nlohmann::json>> runs;

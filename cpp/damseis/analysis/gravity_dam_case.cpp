@@ -115,6 +115,15 @@ input::Schema gravity_dam_schema()
   s.real("uplift.alpha", "0.25", "-",
          "residual uplift ratio at the drainage line")
       .between(0, 1);
+  s.boolean("study.table6", "false", "-",
+            "the foundation models side by side (the paper's Table 6, "
+            "seismic stresses): for each ratio of study.foundation_ratios, "
+            "the massless block fixed at its far boundary and the block "
+            "with mass and a viscous-spring boundary (with the massless "
+            "run's Rayleigh damping), into subfolders; table6.csv/.md");
+  s.real_array("study.foundation_ratios", "[0.5, 1.0, 2.0]", "-",
+               "E_f / E_d of the table6 study")
+      .between(0.01, 100);
   s.boolean("study.table1", "false", "-",
             "run the elastic, plastic and viscoplastic models (subfolders) "
             "and write table1.csv/.md (the paper's Table 1); each model "
@@ -225,26 +234,29 @@ GravityDamConfig read_gravity_dam_config(const input::Case& c)
   if (g.uplift_on && g.uplift.head_downstream > g.uplift.head_upstream)
     c.fail("uplift.tailwater", "is above the reservoir",
            "a tailwater below reservoir.level");
-  if (viscous_spring)
+  g.rock_rho = c.real("foundation.rho");
+  g.spring_factors = {c.real("foundation.spring_normal"),
+                      c.real("foundation.spring_tangential")};
+  if (viscous_spring && g.concrete_model.kind != ConcreteModelKind::linear)
+    c.fail("foundation.boundary",
+           "viscous_spring is not yet available with HTC concrete",
+           "material.model = \"linear\" or foundation.boundary = "
+           "\"fixed\"");
+  if (c.boolean("study.table6"))
   {
-    if (g.concrete_model.kind != ConcreteModelKind::linear)
-      c.fail("foundation.boundary",
-             "viscous_spring is not yet available with HTC concrete",
-             "material.model = \"linear\" or foundation.boundary = "
-             "\"fixed\"");
-    g.rock.rho = c.real("foundation.rho");
-    WaveFoundation w;
-    w.boundary_tags = {tags::foundation_bottom, tags::foundation_sides};
-    w.centre = {0.5 * (s.heel_x + s.toe_x), s.base_y, 0.0};
-    w.factors = {c.real("foundation.spring_normal"),
-                 c.real("foundation.spring_tangential")};
-    w.rock = {g.rock.E, g.rock.nu, g.rock.rho,
-              g.plane == fem::PlaneMode::plane_stress};
-    w.z_base = s.base_y - s.foundation_depth;
-    w.z_surface = s.base_y;
-    g.wave = w;
-    g.seismic.gravity_regions = {tags::dam};
+    if (!s.foundation)
+      c.fail("study.table6", "needs a foundation block",
+             "foundation.enabled = true");
+    if (g.concrete_model.kind != ConcreteModelKind::linear || g.table1)
+      c.fail("study.table6", "compares linear analyses",
+             "material.model = \"linear\" and study.table1 = false");
+    g.table6_ratios = c.reals("study.foundation_ratios");
+    if (g.table6_ratios.empty())
+      c.fail("study.foundation_ratios", "is empty",
+             "ratios E_f / E_d such as [0.5, 1.0, 2.0]");
   }
+  if (viscous_spring)
+    g = with_foundation(g, g.rock.E, true);
   g.seismic.faces = {{"upstream", {tags::upstream_face}},
                      {"downstream", {tags::downstream_face}}};
   // The section counterclockwise from the heel: heel and toe are singular
@@ -254,6 +266,29 @@ GravityDamConfig read_gravity_dam_config(const input::Case& c)
   g.seismic.singular_points = results::reflex_corners(polygon, base_corners);
   g.seismic.singular_where =
       "the heel, the toe and the re-entrant corners of the section";
+  return g;
+}
+GravityDamConfig with_foundation(const GravityDamConfig& cfg, double E_f,
+                                 bool viscous_spring)
+{
+  GravityDamConfig g = cfg;
+  const auto& s = g.section;
+  g.rock.E = E_f;
+  g.rock.rho = viscous_spring ? g.rock_rho : 0.0;
+  g.wave.reset();
+  g.seismic.gravity_regions.clear();
+  if (!viscous_spring)
+    return g;
+  WaveFoundation w;
+  w.boundary_tags = {tags::foundation_bottom, tags::foundation_sides};
+  w.centre = {0.5 * (s.heel_x + s.toe_x), s.base_y, 0.0};
+  w.factors = g.spring_factors;
+  w.rock = {g.rock.E, g.rock.nu, g.rock.rho,
+            g.plane == fem::PlaneMode::plane_stress};
+  w.z_base = s.base_y - s.foundation_depth;
+  w.z_surface = s.base_y;
+  g.wave = w;
+  g.seismic.gravity_regions = {tags::dam};
   return g;
 }
 } // namespace damseis::analysis

@@ -27,6 +27,13 @@ struct GravityDamConfig
   /// input as vertically incident waves), or none (massless, fixed at its
   /// far boundary).
   std::optional<WaveFoundation> wave;
+  /// The rock's density with mass and the viscous-spring factors (used
+  /// with a viscous-spring boundary).
+  double rock_rho = 2640.0;
+  boundary::SpringFactors spring_factors{1.0, 0.5};
+  /// study.table6: the foundation models side by side for these ratios
+  /// Ef / Ed (empty: no study).
+  std::vector<double> table6_ratios;
   SeismicSettings seismic;
   /// Dam concrete model (linear engine or HTC elastic/plastic/viscoplastic)
   /// with the dynamic factors of that model.
@@ -50,4 +57,11 @@ input::Schema gravity_dam_schema();
 /// Reads and cross-checks the case, loads and scales the records. Throws
 /// input::InputError (one line naming the file and key) for bad input.
 GravityDamConfig read_gravity_dam_config(const input::Case& c);
+
+/// The configuration with a foundation block of modulus E_f: massless and
+/// fixed at its far boundary, or (`viscous_spring`) with mass
+/// (cfg.rock_rho), a viscous-spring boundary and wave input, the dead
+/// weight then on the dam only.
+GravityDamConfig with_foundation(const GravityDamConfig& cfg, double E_f,
+                                 bool viscous_spring);
 } // namespace damseis::analysis
