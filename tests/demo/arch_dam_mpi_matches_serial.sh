@@ -15,9 +15,12 @@
 # components share one record. The mesh is built on rank 0 by gmsh in all
 # runs (same arrays), only its distribution differs; all runs factorise
 # with MUMPS (3D).
-# Usage: arch_dam_mpi_matches_serial.sh ARCH_DAM MPIEXEC PYTHON [mpi|jointless]
+# Extra arguments (--set k=v ...) go to every run (the viscous-spring
+# foundation: its free-field loads per rank, onto the tied unknowns).
+# Usage: arch_dam_mpi_matches_serial.sh ARCH_DAM MPIEXEC PYTHON [mpi|jointless [--set k=v ...]]
 set -eu
 exe=$1 mpiexec=$2 python=$3 mode=${4:-mpi}
+shift $(( $# < 4 ? $# : 4 ))
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 common=(--set mesh.size=16 --set mesh.size_far=60 --set joints.count=3
@@ -26,7 +29,7 @@ common=(--set mesh.size=16 --set mesh.size_far=60 --set joints.count=3
         --set motion.cross_stream.record=../../data/records/elcentro_1940_ns.at2
         --set motion.cross_stream.peak_g=0.15
         --set motion.vertical.record=../../data/records/elcentro_1940_ns.at2
-        --set motion.vertical.peak_g=0.1333)
+        --set motion.vertical.peak_g=0.1333 "$@")
 "$exe" --out "$work/serial" "${common[@]}" >/dev/null
 if [ "$mode" = mpi ]; then
   "$mpiexec" -n 2 "$exe" --out "$work/other" "${common[@]}" >/dev/null

@@ -16,6 +16,7 @@
 #include <damseis/boundary/free_field.h>
 #include <damseis/dynamics/newmark.h>
 #include <damseis/fem/viscous_boundary.h>
+#include <damseis/geometry/ground_surface.h>
 #include <numbers>
 
 using namespace damseis;
@@ -102,8 +103,14 @@ ColumnResult run_column(int c, double T)
   const int steps = static_cast<int>(duration / dt);
   std::array<std::vector<double>, 3> outcrop;
   outcrop[c] = pulse_acceleration(A, T, dt, steps);
+  // The rock's surface (every cell is rock here): the top, y = 0.
+  const geometry::GroundSurface ground(model, {}, {bottom, sides});
+  EXPECT_EQ(ground.size(), 8u);
+  for (double x : {0.0, 3.3, 20.0})
+    for (double y : {-100.0, -37.5, 0.0})
+      EXPECT_NEAR(ground.height({x, y, 0}), 0.0, 1e-12);
   const analysis::FreeFieldLoad load(
-      fe, b,
+      fe, b, ground,
       boundary::VerticalFreeField::from_outcrop(rock, 2, -H, 0, outcrop, dt),
       M.mat(), K.mat(), rayleigh, dt);
   dynamics::LinearNewmark newmark(M.mat(), K.mat(), rayleigh, {dt, 0.0},

@@ -29,9 +29,11 @@ ArchDamModel arch_dam_model(MPI_Comm comm, const ArchDamConfig& cfg)
       arch.model, cfg.order,
       std::map<int, fem::Material>{{tags::dam, cfg.concrete},
                                    {tags::foundation, cfg.rock}});
-  // Massless foundation fixed on its far boundaries.
-  m.fe->fix({tags::foundation_bottom, tags::foundation_sides,
-             tags::foundation_upstream, tags::foundation_downstream});
+  // A massless foundation is fixed on its far boundaries; rock with mass
+  // is held there by the viscous-spring boundary.
+  if (!cfg.wave)
+    m.fe->fix({tags::foundation_bottom, tags::foundation_sides,
+               tags::foundation_upstream, tags::foundation_downstream});
 
   // Bonded joints: the two sides' coincident dofs tied.
   std::vector<std::pair<int, int>> joint_tags;
@@ -62,6 +64,7 @@ ArchDamModel arch_dam_model(MPI_Comm comm, const ArchDamConfig& cfg)
     m.contact = std::move(c);
   }
 
+  m.wave = cfg.wave;
   // Singular lines: where the faces meet the rock.
   m.seismic = cfg.seismic;
   const int faces[3] = {tags::upstream_face, tags::upstream_wetted,
@@ -78,7 +81,8 @@ arch_dam_seismic_analysis(ArchDamModel& model, const RunFolder& folder)
 {
   return linear_seismic_analysis(*model.fe, model.seismic, {}, folder,
                                  model.tie.mat(),
-                                 model.contact ? &*model.contact : nullptr);
+                                 model.contact ? &*model.contact : nullptr,
+                                 model.wave ? &*model.wave : nullptr);
 }
 
 nlohmann::json arch_dam_results(MPI_Comm comm, const ArchDamConfig& cfg,
@@ -88,7 +92,9 @@ nlohmann::json arch_dam_results(MPI_Comm comm, const ArchDamConfig& cfg,
 {
   const auto& arch = model.mesh;
   summary["analysis"] =
-      std::string("arch dam, linear elastic, massless foundation") +
+      std::string("arch dam, linear elastic, ") +
+      (cfg.wave ? "foundation with mass, viscous-spring boundary"
+                : "massless foundation") +
       (model.contact ? ", contact joints" : "");
   std::size_t pairs = 0;
   for (const auto& j : arch.joints)

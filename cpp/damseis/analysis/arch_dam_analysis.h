@@ -28,6 +28,8 @@ struct ArchDamModel
   dolfinx::la::petsc::Matrix tie{nullptr, false};
   /// joints.model = "contact": the contact joints (tie: their modal stage).
   std::optional<ContactJoints> contact;
+  /// foundation.boundary = "viscous_spring": rock with mass, wave input.
+  std::optional<WaveFoundation> wave;
   SeismicSettings seismic;
 };
 

@@ -28,11 +28,28 @@ input::Schema arch_dam_schema()
       .between_exclusive(-1, 0.5);
   s.real("material.rho", "2400", "kg/m3", "mass density of the dam concrete")
       .between(100, 20000);
-  s.real("rock.E", "28.6e9", "Pa",
-         "Young's modulus of the (massless) foundation rock")
+  s.real("rock.E", "28.6e9", "Pa", "Young's modulus of the foundation rock")
       .between(1e7, 2e11);
   s.real("rock.nu", "0.25", "-", "Poisson's ratio of the foundation rock")
       .between_exclusive(-1, 0.5);
+  s.real("rock.rho", "2640", "kg/m3",
+         "mass density of the rock (with foundation.boundary = "
+         "viscous_spring; the fixed foundation is massless)")
+      .between(100, 20000);
+  s.string("foundation.boundary", "fixed", "-",
+           "fixed: massless rock fixed at its far faces, the ground motion "
+           "as base acceleration; viscous_spring: rock with mass "
+           "(rock.rho) and a viscous-spring boundary on its far faces and "
+           "bottom, the ground motion as the outcrop motion of vertically "
+           "incident waves",
+           {"fixed", "viscous_spring"});
+  s.real("foundation.spring_normal", "1.3333333333333333", "-",
+         "viscous-spring boundary: normal spring alpha_n G / R (R from the "
+         "crown's base; 4/3: Liu et al. 2006)")
+      .between(0, 10);
+  s.real("foundation.spring_tangential", "0.6666666666666666", "-",
+         "viscous-spring boundary: tangential spring alpha_t G / R (2/3)")
+      .between(0, 10);
   s.string("joints.model", "bonded", "-",
            "contraction joints in a linear analysis: bonded (tied pairs) or "
            "contact (Coulomb friction, no tension)",
@@ -181,6 +198,29 @@ ArchDamConfig read_arch_dam_config(const input::Case& c)
                      {"downstream", {tags::downstream_face}}};
   read_joint_contact(c, a);
   read_joint_study(c, a);
+  if (c.string("foundation.boundary") == "viscous_spring")
+  {
+    if (a.joints == JointModel::contact)
+      c.fail("foundation.boundary",
+             "viscous_spring is not yet available with contact joints",
+             "joints.model = \"bonded\" or foundation.boundary = "
+             "\"fixed\"");
+    a.rock.rho = c.real("rock.rho");
+    WaveFoundation w;
+    w.boundary_tags = {tags::foundation_bottom, tags::foundation_sides,
+                       tags::foundation_upstream, tags::foundation_downstream};
+    w.centre = base;
+    w.factors = {c.real("foundation.spring_normal"),
+                 c.real("foundation.spring_tangential")};
+    w.rock = {a.rock.E, a.rock.nu, a.rock.rho, false};
+    // The model's bottom and the crown's base (the canyon floor) as the
+    // reference surface of the record's timing; each column's own ground
+    // is its free surface (geometry::GroundSurface).
+    w.z_base = -a.geometry.foundation.below * h;
+    w.z_surface = base[2];
+    a.wave = w;
+    a.seismic.gravity_regions = {tags::dam};
+  }
   return a;
 }
 

@@ -4,11 +4,13 @@
 #pragma once
 
 #include "seismic_settings.h"
+#include "wave_foundation.h"
 #include <damseis/fem/elastic_model.h>
 #include <damseis/geometry/arch_dam.h>
 #include <damseis/input/case.h>
 #include <damseis/joint/static_contact.h>
 #include <map>
+#include <optional>
 #include <string>
 
 namespace damseis::analysis
@@ -25,7 +27,10 @@ struct ArchDamConfig
   geometry::ArchDamDefinition geometry;
   int order = 2;
   fem::Material concrete;
-  fem::Material rock; ///< massless foundation (rho = 0)
+  fem::Material rock; ///< massless foundation (rho = 0), or with mass
+  /// Rock with mass and a viscous-spring boundary, the ground motion as
+  /// vertically incident waves; none: massless, fixed far faces.
+  std::optional<WaveFoundation> wave;
   JointModel joints = JointModel::bonded;
   /// Contact joints: friction and shear keys per joint label, restitution,
   /// static stage.

@@ -10,11 +10,12 @@ using dolfinx::la::petsc::Vector;
 
 FreeFieldLoad::FreeFieldLoad(const fem::ElasticModel& fe,
                              const fem::ViscousBoundary& b,
+                             const geometry::GroundSurface& ground,
                              boundary::VerticalFreeField field, Mat M, Mat K,
                              dynamics::RayleighDamping damping, double dt,
-                             Vec sustained)
-    : _field(std::move(field)), _M(M), _K(K), _damping(damping), _dt(dt),
-      _dim(fe.dim())
+                             Mat tie, Vec sustained)
+    : _field(std::move(field)), _M(M), _K(K), _tie(tie), _damping(damping),
+      _dt(dt), _dim(fe.dim())
 {
   _Kb = Matrix(b.springs(), false);
   _Cb = Matrix(b.dashpots(), false);
@@ -24,14 +25,26 @@ FreeFieldLoad::FreeFieldLoad(const fem::ElasticModel& fe,
     _sustained = linalg::column_vector(K);
     VecCopy(sustained, _sustained.vec());
   }
-  for (Vector* v : {&_u_b, &_v_b, &_s_b, &_v_all, &_work})
-    *v = linalg::column_vector(K);
+  for (Vector* v : {&_u_b, &_v_b, &_s_b, &_v_all, &_f_full})
+    *v = linalg::column_vector(_Kb.mat());
+  _work = linalg::column_vector(K);
+  if (tie)
+  {
+    _v_r = linalg::column_vector(K);
+    _count = linalg::column_vector(K);
+    VecSet(_v_all.vec(), 1.0);
+    MatMultTranspose(tie, _v_all.vec(), _count.vec());
+  }
   const auto& map = *fe.V()->dofmap()->index_map;
   const std::int32_t n = map.size_local();
   const std::vector<double> x = fe.V()->tabulate_dof_coordinates(false);
   _z.resize(n);
+  _z_ground.resize(n);
   for (std::int32_t i = 0; i < n; ++i)
+  {
     _z[i] = x[3 * i + _dim - 1];
+    _z_ground[i] = ground.height({x[3 * i], x[3 * i + 1], x[3 * i + 2]});
+  }
   _fixed.assign(n, 0);
   for (std::int32_t dof : fe.fixed_dofs())
     if (dof / _dim < n)
@@ -51,7 +64,7 @@ void FreeFieldLoad::assemble(int k, Vec f) const
   VecGetArray(_s_b.vec(), &s);
   for (std::int32_t i : _boundary)
   {
-    const boundary::FreeFieldState st = _field.at(_z[i], t);
+    const boundary::FreeFieldState st = _field.at(_z[i], _z_ground[i], t);
     for (int c = 0; c < _dim; ++c)
     {
       u[i * _dim + c] = st.u[c];
@@ -67,27 +80,40 @@ void FreeFieldLoad::assemble(int k, Vec f) const
   for (std::size_t i = 0; i < _z.size(); ++i)
   {
     const std::array<double, 3> w =
-        _fixed[i] ? std::array<double, 3>{} : _field.velocity(_z[i], t);
+        _fixed[i] ? std::array<double, 3>{}
+                  : _field.velocity(_z[i], _z_ground[i], t);
     for (int c = 0; c < _dim; ++c)
       va[i * _dim + c] = w[c];
   }
   VecRestoreArray(_v_all.vec(), &va);
 
-  if (_sustained.vec())
-    VecCopy(_sustained.vec(), f);
+  // The boundary forces (all dofs), onto the system's unknowns.
+  MatMult(_Kb.mat(), _u_b.vec(), _f_full.vec());
+  MatMultAdd(_Cb.mat(), _v_b.vec(), _f_full.vec(), _f_full.vec());
+  MatMultAdd(_T.mat(), _s_b.vec(), _f_full.vec(), _f_full.vec());
+  if (_tie)
+    MatMultTranspose(_tie, _f_full.vec(), f);
   else
-    VecSet(f, 0.0);
-  MatMultAdd(_Kb.mat(), _u_b.vec(), f, f);
-  MatMultAdd(_Cb.mat(), _v_b.vec(), f, f);
-  MatMultAdd(_T.mat(), _s_b.vec(), f, f);
+    VecCopy(_f_full.vec(), f);
+  if (_sustained.vec())
+    VecAXPY(f, 1.0, _sustained.vec());
+  // The damping's reference: the free field's velocity on the system's
+  // unknowns (tied dofs coincide, so it is the mean of the tied values).
+  Vec v_ref = _v_all.vec();
+  if (_tie)
+  {
+    MatMultTranspose(_tie, _v_all.vec(), _v_r.vec());
+    VecPointwiseDivide(_v_r.vec(), _v_r.vec(), _count.vec());
+    v_ref = _v_r.vec();
+  }
   if (_damping.a_mass != 0.0)
   {
-    MatMult(_M, _v_all.vec(), _work.vec());
+    MatMult(_M, v_ref, _work.vec());
     VecAXPY(f, _damping.a_mass, _work.vec());
   }
   if (_damping.b_stiffness != 0.0)
   {
-    MatMult(_K, _v_all.vec(), _work.vec());
+    MatMult(_K, v_ref, _work.vec());
     VecAXPY(f, _damping.b_stiffness, _work.vec());
   }
 }

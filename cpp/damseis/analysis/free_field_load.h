@@ -9,8 +9,10 @@
 // the free field (the scattered field), not on the incident wave, which
 // would otherwise be damped on its way up: C (v - v_ff). On a rigid
 // foundation (v_ff uniform, K v_ff = 0) this is the relative formulation's
-// damping of the massless-foundation model. Above the free surface (the
-// dam) the free field is the surface's motion.
+// damping of the massless-foundation model. Each node's column has its
+// own free surface, the ground above it (geometry::GroundSurface: the
+// valley floor, the rock under the dam, the plateau beyond a canyon); above
+// it (the dam) the free field is the surface's motion.
 #pragma once
 
 #include <damseis/boundary/free_field.h>
@@ -18,6 +20,7 @@
 #include <damseis/engine/parts.h>
 #include <damseis/fem/elastic_model.h>
 #include <damseis/fem/viscous_boundary.h>
+#include <damseis/geometry/ground_surface.h>
 #include <dolfinx/la/petsc.h>
 #include <vector>
 
@@ -26,13 +29,15 @@ namespace damseis::analysis
 class FreeFieldLoad : public engine::DynamicLoad
 {
 public:
-  /// M and K: the system's (K with the boundary's springs), on all dofs
-  /// (no ties); `damping`: the Rayleigh damping of C = a_M M + b_K K
-  /// (+ the dashpots). `sustained`: a load held through the run (copied),
-  /// or null. The matrices must outlive the load.
+  /// M and K: the system's (K with the boundary's springs), on the
+  /// system's unknowns: all dofs, or with `tie` (bonded joints) the tied
+  /// unknowns u = P u_r; `damping`: the Rayleigh damping of C = a_M M +
+  /// b_K K (+ the dashpots). `sustained`: a load held through the run
+  /// (copied, system layout), or null. The matrices must outlive the load.
   FreeFieldLoad(const fem::ElasticModel& fe, const fem::ViscousBoundary& b,
+                const geometry::GroundSurface& ground,
                 boundary::VerticalFreeField field, Mat M, Mat K,
-                dynamics::RayleighDamping damping, double dt,
+                dynamics::RayleighDamping damping, double dt, Mat tie = nullptr,
                 Vec sustained = nullptr);
   void assemble(int k, Vec f) const override;
   /// Zero: the free field starts at rest.
@@ -41,21 +46,25 @@ public:
 
 private:
   boundary::VerticalFreeField _field;
-  Mat _M, _K;
+  Mat _M, _K, _tie;
   dynamics::RayleighDamping _damping;
   double _dt;
   int _dim;
   dolfinx::la::petsc::Matrix _Kb{nullptr, false}, _Cb{nullptr, false},
       _T{nullptr, false};
   dolfinx::la::petsc::Vector _sustained{nullptr, false};
-  /// Owned nodes: the vertical coordinate of each, whether it is fixed,
-  /// and the owned nodes on the boundary.
-  std::vector<double> _z;
+  /// Owned nodes: the vertical coordinate of each, its ground, whether it
+  /// is fixed, and the owned nodes on the boundary.
+  std::vector<double> _z, _z_ground;
   std::vector<std::int8_t> _fixed;
   std::vector<std::int32_t> _boundary;
   /// Work vectors: the free field's u, v, stresses on the boundary and v
   /// at every node.
   dolfinx::la::petsc::Vector _u_b{nullptr, false}, _v_b{nullptr, false},
-      _s_b{nullptr, false}, _v_all{nullptr, false}, _work{nullptr, false};
+      _s_b{nullptr, false}, _v_all{nullptr, false}, _f_full{nullptr, false};
+  /// With ties: the velocity on the tied unknowns, the number of dofs
+  /// tied into each (P^T 1), a work vector of the system's layout.
+  dolfinx::la::petsc::Vector _v_r{nullptr, false}, _count{nullptr, false},
+      _work{nullptr, false};
 };
 } // namespace damseis::analysis

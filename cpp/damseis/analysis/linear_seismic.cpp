@@ -18,6 +18,7 @@
 #include <damseis/fem/prolongation.h>
 #include <damseis/fem/tied_dofs.h>
 #include <damseis/fem/viscous_boundary.h>
+#include <damseis/geometry/ground_surface.h>
 #include <damseis/geometry/tags.h>
 #include <damseis/joint/contact_stepper.h>
 #include <damseis/joint/joint_recorder.h>
@@ -91,6 +92,7 @@ private:
   const ContactJoints* _contact; ///< null: no contact joints
   const WaveFoundation* _wave;   ///< null: massless foundation
   std::unique_ptr<fem::ViscousBoundary> _boundary;
+  std::unique_ptr<geometry::GroundSurface> _ground;
   Matrix _dashpots{nullptr, false};
   std::optional<boundary::VerticalFreeField> _free_field;
   Mat _modal_tie = nullptr; ///< with contact: the joints bonded
@@ -160,16 +162,23 @@ LinearSeismicAnalysis::LinearSeismicAnalysis(fem::ElasticModel& fe,
 
 void LinearSeismicAnalysis::set_up_wave_foundation(Mat K)
 {
-  if (_tie || _contact || _loads.initial_velocity)
+  if (_contact || _loads.initial_velocity)
     throw std::invalid_argument(
         "a foundation with a viscous-spring boundary does not yet take "
-        "bonded or contact joints or an initial velocity");
+        "contact joints or an initial velocity");
   _boundary = std::make_unique<fem::ViscousBoundary>(
       _fe, *_fe.model().facet_tags, _wave->boundary_tags, _wave->centre,
       _wave->factors);
+  _ground = std::make_unique<geometry::GroundSurface>(
+      _fe.model(), _s.dam_regions, _wave->boundary_tags);
   Matrix springs(_boundary->springs(), false);
-  MatAXPY(K, 1.0, springs.mat(), SUBSET_NONZERO_PATTERN);
   _dashpots = Matrix(_boundary->dashpots(), false);
+  if (_tie) // on the tied unknowns
+  {
+    springs = Matrix(fem::reduce_to_tied(springs.mat(), _tie), false);
+    _dashpots = Matrix(fem::reduce_to_tied(_dashpots.mat(), _tie), false);
+  }
+  MatAXPY(K, 1.0, springs.mat(), SUBSET_NONZERO_PATTERN);
   std::array<std::vector<double>, 3> outcrop;
   for (int c = 0; c < _fe.dim(); ++c)
     if (_s.motion[c].active)
@@ -179,7 +188,8 @@ void LinearSeismicAnalysis::set_up_wave_foundation(Mat K)
       _s.scheme.dt);
   results::print(_comm, "foundation with mass, viscous-spring boundary (" +
                             std::to_string(_boundary->measure()) +
-                            " m), vertically incident waves: the surface "
+                            (_fe.dim() == 3 ? " m2" : " m") +
+                            "), vertically incident waves: the surface "
                             "moves with the record " +
                             std::to_string(_free_field->surface_delay()) +
                             " s late");
@@ -189,9 +199,9 @@ std::unique_ptr<engine::DynamicLoad>
 LinearSeismicAnalysis::seismic_load(Vec sustained) const
 {
   if (_wave)
-    return std::make_unique<FreeFieldLoad>(_fe, *_boundary, *_free_field,
-                                           _M.mat(), _K.mat(), _modal->damping,
-                                           _s.scheme.dt, sustained);
+    return std::make_unique<FreeFieldLoad>(
+        _fe, *_boundary, *_ground, *_free_field, _M.mat(), _K.mat(),
+        _modal->damping, _s.scheme.dt, _tie, sustained);
   return std::make_unique<GroundMotionLoad>(_fe, _s, _M.mat(), _tie, sustained);
 }
 

@@ -138,10 +138,11 @@ VerticalFreeField VerticalFreeField::from_outcrop(
   return f;
 }
 
-FreeFieldState VerticalFreeField::at(double z, double t) const
+FreeFieldState VerticalFreeField::at(double z, double zs, double t) const
 {
   FreeFieldState s;
-  const double zc = std::min(z, _zs);
+  zs = std::max(zs, _zb);
+  const double zc = std::min(z, zs);
   for (int i = 0; i < _dim; ++i)
   {
     const SampledMotion& w = _incident[i];
@@ -149,7 +150,7 @@ FreeFieldState VerticalFreeField::at(double z, double t) const
       continue;
     const double c = speed(i);
     const double t_up = t - (zc - _zb) / c;
-    const double t_dn = t - (2.0 * _zs - zc - _zb) / c;
+    const double t_dn = t - (2.0 * zs - zc - _zb) / c;
     s.u[i] = w.displacement(t_up) + w.displacement(t_dn);
     const double v_up = w.velocity(t_up), v_dn = w.velocity(t_dn);
     s.v[i] = v_up + v_dn;
@@ -158,10 +159,12 @@ FreeFieldState VerticalFreeField::at(double z, double t) const
   return s;
 }
 
-std::array<double, 3> VerticalFreeField::velocity(double z, double t) const
+std::array<double, 3> VerticalFreeField::velocity(double z, double zs,
+                                                  double t) const
 {
   std::array<double, 3> v{};
-  const double zc = std::min(z, _zs);
+  zs = std::max(zs, _zb);
+  const double zc = std::min(z, zs);
   for (int i = 0; i < _dim; ++i)
   {
     const SampledMotion& w = _incident[i];
@@ -169,7 +172,7 @@ std::array<double, 3> VerticalFreeField::velocity(double z, double t) const
       continue;
     const double c = speed(i);
     v[i] = w.velocity(t - (zc - _zb) / c) +
-           w.velocity(t - (2.0 * _zs - zc - _zb) / c);
+           w.velocity(t - (2.0 * zs - zc - _zb) / c);
   }
   return v;
 }

@@ -78,13 +78,18 @@ public:
 
   /// The state at height z (<= z_surface; above it, the surface's) and
   /// time t.
-  FreeFieldState at(double z, double t) const;
+  FreeFieldState at(double z, double t) const { return at(z, _zs, t); }
+  /// The same in a column whose free surface is at z_s (>= z_base: the
+  /// local ground of a canyon, with the base's incident wave).
+  FreeFieldState at(double z, double z_s, double t) const;
   /// The velocity alone (cheaper).
-  std::array<double, 3> velocity(double z, double t) const;
+  std::array<double, 3> velocity(double z, double z_s, double t) const;
 
   /// The wave speed of component i (c_s horizontal, c_p vertical).
   double speed(int i) const { return i == _dim - 1 ? _rock.cp() : _rock.cs(); }
-  /// How much later the surface moves than the outcrop record.
+  /// How much later the surface (at z_surface) moves than the outcrop
+  /// record. A column whose ground is lower sees the same incident wave
+  /// earlier reflected.
   double surface_delay() const { return (_zs - _zb) / _rock.cs(); }
   const Rock& rock() const { return _rock; }
   double z_base() const { return _zb; }
