@@ -1,5 +1,6 @@
 // Arch dam: linear seismic analysis of a 3D arch dam in its canyon, on a
-// massless foundation, with bonded contraction joints.
+// massless foundation or on rock with mass and a viscous-spring boundary,
+// with bonded or contact contraction joints.
 //   build/bin/arch_dam [--case FILE] [--out DIR] [--set key=value ...]
 // With no arguments it runs demos/arch_dam/arch_dam.toml (the paper's 102 m
 // dam); presets of other dams are in demos/arch_dam/presets/; --help lists
@@ -10,6 +11,7 @@
 // several sets of active joints (the paper's Tables 2-5).
 #include <damseis/analysis/arch_dam_analysis.h>
 #include <damseis/analysis/demo_main.h>
+#include <damseis/analysis/foundation_study.h>
 #include <damseis/analysis/joint_study.h>
 #include <damseis/results/progress.h>
 
@@ -20,7 +22,8 @@ nlohmann::json analyse(MPI_Comm comm, const ArchDamConfig& config,
                        const std::string& case_text)
 {
   // 1. Model: dam, canyon and foundation block meshed by gmsh (OCC), the
-  //    joints split and tied, the foundation fixed on its far boundaries.
+  //    joints split and tied, the foundation fixed on its far boundaries
+  //    (massless) or held by a viscous-spring boundary (with mass).
   ArchDamModel model = arch_dam_model(comm, config);
   auto analysis = arch_dam_seismic_analysis(model, {out_dir, case_text});
   // 2. Modes with and without the reservoir's added mass (Westergaard);
@@ -35,12 +38,36 @@ nlohmann::json analyse(MPI_Comm comm, const ArchDamConfig& config,
   return arch_dam_results(comm, config, model, analysis->results(), out_dir);
 }
 
+// A foundation study (study.foundation): the analysis above on massless
+// rock and on rock with mass and a viscous-spring boundary, for each ratio
+// E_f / E_d (the paper's Figs. 22-27).
+nlohmann::json foundation_study(MPI_Comm comm, const ArchDamConfig& config,
+                                const std::filesystem::path& out_dir,
+                                const std::string& case_text)
+{
+  return run_foundation_study(
+      comm, config.foundation_ratios, out_dir, "foundation_study",
+      [&](double ratio, bool viscous_spring,
+          const std::vector<double>& damping_hz,
+          const std::filesystem::path& dir)
+      {
+        ArchDamConfig c =
+            with_foundation(config, ratio * config.concrete.E, viscous_spring);
+        c.foundation_ratios.clear();
+        if (!damping_hz.empty())
+          c.seismic.damping_frequencies_hz = damping_hz;
+        return analyse(comm, c, dir, case_text);
+      });
+}
+
 // A joint study (study.joints): the analysis above once per set of active
 // joints, each into its subfolder, then the comparison tables.
 nlohmann::json study(MPI_Comm comm, const ArchDamConfig& config,
                      const std::filesystem::path& out_dir,
                      const std::string& case_text)
 {
+  if (!config.foundation_ratios.empty())
+    return foundation_study(comm, config, out_dir, case_text);
   if (config.study_joints.empty())
     return analyse(comm, config, out_dir, case_text);
   std::vector<JointStudyRun> runs;

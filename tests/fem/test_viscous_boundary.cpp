@@ -164,3 +164,72 @@ TEST(ViscousSpringColumn, PWaveReproducesSurfaceMotionAndLeaves)
   EXPECT_LT(r.surface_error, 1e-3);
   EXPECT_LT(r.residual, 1e-5);
 }
+
+namespace
+{
+/// The box model with its top bent to z = slope(x, y) (each node moved by
+/// (1 + z / depth) slope: the bottom stays, the top follows the plane
+/// exactly), cells with their centroid at x > 0.5 and above z_dam taken as
+/// the dam (region 1), the rest rock (region 2); facets: bottom 5.
+Model bent_model(int tdim, const std::function<double(const Point&)>& slope,
+                 double z_dam)
+{
+  Model m = tdim == 2
+                ? rectangle_model(MPI_COMM_WORLD, {0, -1}, {1, 0}, {10, 10},
+                                  [](const Point& p)
+                                  { return p[1] < -1 + 1e-9 ? bottom : -1; })
+                : box_model(MPI_COMM_WORLD, {0, 0, -1}, {1, 1, 0}, {6, 6, 6},
+                            [](const Point& p)
+                            { return p[2] < -1 + 1e-9 ? bottom : -1; });
+  // Regions from the straight mesh's centroids.
+  auto& mesh = *m.mesh;
+  const auto& dofs = mesh.geometry().dofmap();
+  std::span<double> x = mesh.geometry().x();
+  std::vector<std::int32_t> cells(dofs.num_nodes());
+  std::vector<std::int32_t> regions(dofs.num_nodes());
+  for (std::int32_t c = 0; c < dofs.num_nodes(); ++c)
+  {
+    Point mid{0, 0, 0};
+    auto v = dofs.links(c);
+    for (auto node : v)
+      for (int k = 0; k < 3; ++k)
+        mid[k] += x[3 * node + k] / v.size();
+    cells[c] = c;
+    regions[c] =
+        mid[0] > 0.5 && mid[tdim - 1] > z_dam ? tags::dam : tags::foundation;
+  }
+  m.cell_tags = std::make_shared<dolfinx::mesh::MeshTags<std::int32_t>>(
+      m.mesh, tdim, std::move(cells), std::move(regions));
+  for (std::size_t i = 0; i < x.size() / 3; ++i)
+  {
+    double* p = &x[3 * i];
+    p[tdim - 1] += (1 + p[tdim - 1]) * slope({p[0], p[1], p[2]});
+  }
+  return m;
+}
+} // namespace
+
+// The rock's surface as a height field: a sloped plane top (exact on the
+// P1 geometry) where the rock is exposed, the rock-dam interface under the
+// dam (x > 0.5: the dam occupies z > -0.5 of the straight box, the
+// interface then at -0.5 + 0.5 slope), in 2D and 3D; the bottom (excluded)
+// and vertical facets play no part. To round-off.
+TEST(GroundSurface, SlopedTopAndRockUnderTheDam)
+{
+  for (int tdim : {2, 3})
+  {
+    auto slope = [tdim](const Point& p)
+    { return tdim == 2 ? 0.2 * p[0] : 0.1 * p[0] + 0.2 * p[1]; };
+    const Model m = bent_model(tdim, slope, -0.5);
+    const geometry::GroundSurface ground(m, {tags::dam}, {bottom});
+    for (double px : {0.05, 0.23, 0.41, 0.62, 0.77, 0.98})
+      for (double py : {0.07, 0.5, 0.93})
+      {
+        const Point p = tdim == 2 ? Point{px, -0.3, 0} : Point{px, py, -0.3};
+        // A point at x = 0.5 +- is on the wall between the two.
+        const double expected = px < 0.5 ? slope(p) : -0.5 + 0.5 * slope(p);
+        EXPECT_NEAR(ground.height(p), expected, 1e-12)
+            << tdim << "D at x " << px << ", y " << py;
+      }
+  }
+}

@@ -62,6 +62,15 @@ input::Schema arch_dam_schema()
            "contact: labels of the joints with shear keys (no sliding, "
            "opening free), e.g. \"DG\"");
   add_joint_contact_keys(s, "cantilever");
+  s.boolean("study.foundation", "false", "-",
+            "the foundation models side by side: for each ratio of "
+            "study.foundation_ratios, the massless rock and the rock with "
+            "mass and a viscous-spring boundary (with the massless run's "
+            "Rayleigh damping), into subfolders; foundation_study.csv/.md");
+  s.real_array("study.foundation_ratios", "[0.5, 1.0, 1.5]", "-",
+               "E_f / E_d of study.foundation (the paper's for the 102 m "
+               "dam)")
+      .between(0.01, 100);
   s.string_array("study.joints", "[]", "-",
                  "a study: one run per joint set, each into its subfolder, "
                  "and the comparison tables (joint_study.md): \"none\" or "
@@ -198,29 +207,57 @@ ArchDamConfig read_arch_dam_config(const input::Case& c)
                      {"downstream", {tags::downstream_face}}};
   read_joint_contact(c, a);
   read_joint_study(c, a);
-  if (c.string("foundation.boundary") == "viscous_spring")
+  a.rock_rho = c.real("rock.rho");
+  a.spring_factors = {c.real("foundation.spring_normal"),
+                      c.real("foundation.spring_tangential")};
+  const bool viscous_spring =
+      c.string("foundation.boundary") == "viscous_spring";
+  if (c.boolean("study.foundation"))
   {
-    if (a.joints == JointModel::contact)
-      c.fail("foundation.boundary",
-             "viscous_spring is not yet available with contact joints",
-             "joints.model = \"bonded\" or foundation.boundary = "
-             "\"fixed\"");
-    a.rock.rho = c.real("rock.rho");
-    WaveFoundation w;
-    w.boundary_tags = {tags::foundation_bottom, tags::foundation_sides,
-                       tags::foundation_upstream, tags::foundation_downstream};
-    w.centre = base;
-    w.factors = {c.real("foundation.spring_normal"),
-                 c.real("foundation.spring_tangential")};
-    w.rock = {a.rock.E, a.rock.nu, a.rock.rho, false};
-    // The model's bottom and the crown's base (the canyon floor) as the
-    // reference surface of the record's timing; each column's own ground
-    // is its free surface (geometry::GroundSurface).
-    w.z_base = -a.geometry.foundation.below * h;
-    w.z_surface = base[2];
-    a.wave = w;
-    a.seismic.gravity_regions = {tags::dam};
+    a.foundation_ratios = c.reals("study.foundation_ratios");
+    if (a.foundation_ratios.empty())
+      c.fail("study.foundation_ratios", "is empty",
+             "ratios E_f / E_d such as [0.5, 1.0, 1.5]");
+    if (!a.study_joints.empty())
+      c.fail("study.foundation", "is given with study.joints",
+             "one study at a time");
   }
+  if ((viscous_spring || !a.foundation_ratios.empty()) &&
+      a.joints == JointModel::contact)
+    c.fail(viscous_spring ? "foundation.boundary" : "study.foundation",
+           "the viscous-spring boundary is not yet available with contact "
+           "joints",
+           "joints.model = \"bonded\" or foundation.boundary = \"fixed\"");
+  if (viscous_spring)
+    a = with_foundation(a, a.rock.E, true);
+  return a;
+}
+
+ArchDamConfig with_foundation(const ArchDamConfig& cfg, double E_f,
+                              bool viscous_spring)
+{
+  ArchDamConfig a = cfg;
+  a.rock.E = E_f;
+  a.rock.rho = viscous_spring ? a.rock_rho : 0.0;
+  a.wave.reset();
+  a.seismic.gravity_regions.clear();
+  if (!viscous_spring)
+    return a;
+  const geometry::ArchDamGeometry shape(a.geometry);
+  const double h = shape.height();
+  WaveFoundation w;
+  w.boundary_tags = {tags::foundation_bottom, tags::foundation_sides,
+                     tags::foundation_upstream, tags::foundation_downstream};
+  w.centre = shape.face_point(0.0, 0.0, -1); // the crown's base
+  w.factors = a.spring_factors;
+  w.rock = {a.rock.E, a.rock.nu, a.rock.rho, false};
+  // The model's bottom, and the crown's base (the canyon floor) as the
+  // reference surface of the record's timing; each column's own ground is
+  // its free surface (geometry::GroundSurface).
+  w.z_base = -a.geometry.foundation.below * h;
+  w.z_surface = w.centre[2];
+  a.wave = w;
+  a.seismic.gravity_regions = {tags::dam};
   return a;
 }
 

@@ -31,6 +31,11 @@ struct ArchDamConfig
   /// Rock with mass and a viscous-spring boundary, the ground motion as
   /// vertically incident waves; none: massless, fixed far faces.
   std::optional<WaveFoundation> wave;
+  /// The rock's density with mass and the viscous-spring factors.
+  double rock_rho = 2640.0;
+  boundary::SpringFactors spring_factors{4.0 / 3.0, 2.0 / 3.0};
+  /// study.foundation: the ratios E_f / E_d (empty: no study).
+  std::vector<double> foundation_ratios;
   JointModel joints = JointModel::bonded;
   /// Contact joints: friction and shear keys per joint label, restitution,
   /// static stage.
@@ -57,6 +62,12 @@ input::Schema arch_dam_schema();
 
 /// Throws input::InputError (one line naming the file and key).
 ArchDamConfig read_arch_dam_config(const input::Case& c);
+
+/// The configuration with rock of modulus E_f: massless with fixed far
+/// faces, or (`viscous_spring`) with mass (rock_rho), a viscous-spring
+/// boundary and wave input, the dead weight then on the dam only.
+ArchDamConfig with_foundation(const ArchDamConfig& cfg, double E_f,
+                              bool viscous_spring);
 
 /// The configuration of one run of a joint study: the joints of `set`
 /// ("none": the dam without joints, bonded) active, the rest as `a`.

@@ -31,10 +31,10 @@ std::string ratio_name(double r)
   return os.str();
 }
 
-void write_table6(const std::vector<Row>& rows,
-                  const std::filesystem::path& dir)
+void write_table(const std::vector<Row>& rows, const std::filesystem::path& dir,
+                 const std::string& table)
 {
-  std::ofstream csv(dir / "table6.csv"), md(dir / "table6.md");
+  std::ofstream csv(dir / (table + ".csv")), md(dir / (table + ".md"));
   csv << "ef_over_ed,foundation,max_tension_mpa,max_compression_mpa,"
          "max_tension_away_mpa,max_compression_away_mpa,crest_cm,f1_hz\n";
   for (const Row& r : rows)
@@ -51,10 +51,12 @@ void write_table6(const std::vector<Row>& rows,
     }
   const double radius =
       rows.front().massless["away_from_singular_points"]["radius_m"];
-  md << "Seismic stress response of the section (MPa), as the paper's Table "
-        "6. A: dam-foundation interaction (block with mass, viscous-spring "
-        "boundary, vertically incident waves); B: massless foundation. "
-        "Compression as a magnitude.\n\n| | |";
+  md << "Stress response of the dam (MPa; " +
+            rows.front().massless["stress"].get<std::string>() +
+            " stresses; compression as a magnitude), as the paper's Table "
+            "6. A: dam-foundation interaction (rock with mass, "
+            "viscous-spring boundary, vertically incident waves); B: "
+            "massless foundation.\n\n| | |";
   for (const Row& r : rows)
     md << " E_f/E_d = " << r.ratio << " |";
   md << "\n|---|---|";
@@ -106,36 +108,53 @@ void write_table6(const std::vector<Row>& rows,
 }
 } // namespace
 
-nlohmann::json run_foundation_study(MPI_Comm comm, const GravityDamConfig& cfg,
+nlohmann::json run_foundation_study(MPI_Comm comm,
+                                    const std::vector<double>& ratios,
                                     const std::filesystem::path& out_dir,
-                                    const std::string& case_text,
-                                    const GravityDamRun& analyse)
+                                    const std::string& table,
+                                    const FoundationRun& run)
 {
   std::vector<Row> rows;
-  const double E_d = cfg.concrete_model.params.E;
-  for (double ratio : cfg.table6_ratios)
+  for (double ratio : ratios)
   {
     Row row{ratio, {}, {}};
     const std::filesystem::path dir = out_dir / ratio_name(ratio);
-    GravityDamConfig massless = with_foundation(cfg, ratio * E_d, false);
-    massless.table6_ratios.clear();
-    massless.seismic.stress_total = false; // Table 6: seismic stresses
     const std::string name = ratio_name(ratio).substr(6);
     results::print(comm, "== E_f / E_d = " + name + ": massless foundation ==");
-    row.massless = analyse(comm, massless, {dir / "massless", case_text});
-    GravityDamConfig wave = with_foundation(massless, ratio * E_d, true);
-    wave.seismic.damping_frequencies_hz = {
+    row.massless = run(ratio, false, {}, dir / "massless");
+    const std::vector<double> damping = {
         row.massless["damping"]["f1_hz"].get<double>(),
         row.massless["damping"]["f2_hz"].get<double>()};
     results::print(comm,
                    "== E_f / E_d = " + name + ": viscous-spring boundary ==");
-    row.interaction = analyse(comm, wave, {dir / "viscous_spring", case_text});
+    row.interaction = run(ratio, true, damping, dir / "viscous_spring");
     rows.push_back(std::move(row));
   }
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   if (rank == 0)
-    write_table6(rows, out_dir);
+    write_table(rows, out_dir, table);
   return rows.back().interaction;
+}
+
+nlohmann::json run_table6_study(MPI_Comm comm, const GravityDamConfig& cfg,
+                                const std::filesystem::path& out_dir,
+                                const std::string& case_text,
+                                const GravityDamRun& analyse)
+{
+  const double E_d = cfg.concrete_model.params.E;
+  return run_foundation_study(
+      comm, cfg.table6_ratios, out_dir, "table6",
+      [&](double ratio, bool viscous_spring,
+          const std::vector<double>& damping_hz,
+          const std::filesystem::path& dir)
+      {
+        GravityDamConfig c = with_foundation(cfg, ratio * E_d, viscous_spring);
+        c.table6_ratios.clear();
+        c.seismic.stress_total = false; // Table 6: seismic stresses
+        if (!damping_hz.empty())
+          c.seismic.damping_frequencies_hz = damping_hz;
+        return analyse(comm, c, {dir, case_text});
+      });
 }
 } // namespace damseis::analysis

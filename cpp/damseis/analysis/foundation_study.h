@@ -1,20 +1,37 @@
-// The foundation models side by side (the paper's Table 6, study.table6):
-// for each ratio E_f / E_d, the massless block fixed at its far boundary
-// (case B) and the block with mass and a viscous-spring boundary under
-// vertically incident waves (case A, dam-foundation interaction), seismic
-// stresses only.
+// The foundation models side by side (the paper's Table 6 for the Koyna
+// section, Figs. 22-27 for the 102 m arch dam): for each ratio E_f / E_d,
+// the massless foundation fixed at its far boundary (case B) and the rock
+// with mass and a viscous-spring boundary under vertically incident waves
+// (case A, dam-foundation interaction).
 #pragma once
 
 #include "gravity_dam_analysis.h"
+#include <functional>
 
 namespace damseis::analysis
 {
+/// One run of the study into `dir`: the foundation of modulus ratio
+/// E_f / E_d, with mass and a viscous-spring boundary or massless, the
+/// Rayleigh damping fitted at `damping_hz` (empty: at the run's own
+/// modes); returns its summary.
+using FoundationRun = std::function<nlohmann::json(
+    double ratio, bool viscous_spring, const std::vector<double>& damping_hz,
+    const std::filesystem::path& dir)>;
+
 /// Runs the cases into out_dir/ratio_<r>/{massless,viscous_spring} and
-/// writes table6.csv and table6.md. Each interaction run takes the Rayleigh
-/// damping of its massless run (the same two frequencies), so that the two
-/// differ by the foundation model alone. Returns the last summary.
-nlohmann::json run_foundation_study(MPI_Comm comm, const GravityDamConfig& cfg,
+/// writes <table>.csv and <table>.md. Each interaction run takes the
+/// Rayleigh damping of its massless run (the same two frequencies), so that
+/// the two differ by the foundation model alone. Returns the last summary.
+nlohmann::json run_foundation_study(MPI_Comm comm,
+                                    const std::vector<double>& ratios,
                                     const std::filesystem::path& out_dir,
-                                    const std::string& case_text,
-                                    const GravityDamRun& analyse);
+                                    const std::string& table,
+                                    const FoundationRun& run);
+
+/// The gravity-dam section's study (study.table6): seismic stresses, into
+/// table6.csv and table6.md.
+nlohmann::json run_table6_study(MPI_Comm comm, const GravityDamConfig& cfg,
+                                const std::filesystem::path& out_dir,
+                                const std::string& case_text,
+                                const GravityDamRun& analyse);
 } // namespace damseis::analysis

@@ -159,7 +159,7 @@ nlohmann::json run_gravity_dam_study(MPI_Comm comm, const GravityDamConfig& cfg,
   print_size_estimate(comm, geometry::estimated_cells(cfg.section), 2,
                       cfg.order, cfg.seismic.steps);
   if (!cfg.table6_ratios.empty())
-    return run_foundation_study(comm, cfg, out_dir, case_text, analyse);
+    return run_table6_study(comm, cfg, out_dir, case_text, analyse);
   if (!cfg.table1)
     return analyse(comm, cfg, {out_dir, case_text});
   std::vector<std::pair<std::string, nlohmann::json>> runs;
