@@ -37,6 +37,11 @@ expect dm_traction_components 'loads\.traction: has 3 values for 1 groups' --set
 expect dm_history_file 'loads\.traction_history: .*nofile\.txt' --set 'loads.traction_groups=[crest]' --set 'loads.traction=[0, -1e5]' --set loads.traction_history=nofile.txt
 expect dm_region_twice 'regions\.groups: lists "dam" twice' --set 'regions.groups=[dam, dam]' --set 'regions.E=[1e9, 1e9]' --set 'regions.nu=[0.2, 0.2]' --set 'regions.rho=[1, 1]'
 expect dm_history_name_twice 'output\.history_names: lists "a" twice' --set 'output.history_names=[a, a]' --set 'output.history_points=[0, 100, 0, 100]'
+# The viscous-spring boundary (issue 20).
+expect dm_fixed_and_viscous_spring 'supports\.viscous_spring: is given with supports\.fixed' --set 'supports.viscous_spring=[upstream_face]'
+expect dm_viscous_spring_without_rock 'supports\.viscous_spring: needs a rock region' --set 'supports.fixed=[]' --set 'supports.viscous_spring=[dam_base]'
+expect dm_viscous_spring_massless_rock 'supports\.viscous_spring: needs rock with mass, and region "block_right" is massless' --case "$block" --set 'supports.fixed=[]' --set 'supports.viscous_spring=[base]' --set 'regions.dam=[block_left]' --set 'regions.rho=[2400, 0]'
+expect dm_viscous_spring_rock_beside_the_dam 'supports\.viscous_spring: needs rock below the dam' --case "$block" --set 'supports.fixed=[]' --set 'supports.viscous_spring=[base]' --set 'regions.dam=[block_left]'
 expect dm_interior_traction 'loads\.traction_groups: names "joint_left", which has .* facets inside the model' --case "$block" --set mesh.file=meshes/block_jointless.msh --set 'joints.side1=[]' --set 'joints.side2=[]' --set 'loads.traction_groups=[joint_left]' --set 'loads.traction=[0, 0, -1e5]'
 expect dm_concrete_zones 'regions\.E: differs between the dam regions' --case "$block" --set material.model=plastic --set 'regions.E=[24e9, 20e9]'
 # Contact joints (issue 19).

@@ -92,10 +92,12 @@ DamModel dam_model(MPI_Comm comm, const DamModelConfig& cfg)
   }
   m.fe = std::make_unique<fem::ElasticModel>(cfg.mesh->model, cfg.order,
                                              materials, cfg.plane);
+  // Fixed supports, or rock held by its viscous-spring boundary.
   std::vector<int> fixed;
   for (const auto& g : cfg.fixed)
     fixed.push_back(facet_tag(cfg, g));
-  m.fe->fix(fixed);
+  if (!fixed.empty())
+    m.fe->fix(fixed);
 
   // Bonded joints: the sides' coincident dofs tied (checked node for node
   // when the case was read).
@@ -170,7 +172,8 @@ dam_model_seismic_analysis(DamModel& model, const DamModelConfig& cfg,
   if (cfg.concrete.kind == ConcreteModelKind::linear)
     return linear_seismic_analysis(*model.fe, cfg.seismic, model.loads(cfg),
                                    folder, model.tie.mat(),
-                                   model.contact ? &*model.contact : nullptr);
+                                   model.contact ? &*model.contact : nullptr,
+                                   cfg.wave ? &*cfg.wave : nullptr);
   ConcreteBulk bulk{cfg.concrete, {}, cfg.plane, cfg.seismic.dam_regions};
   for (const Region& r : cfg.regions)
   {
@@ -188,9 +191,10 @@ nlohmann::json dam_model_results(MPI_Comm comm, const DamModelConfig& cfg,
                                  const std::filesystem::path& out_dir)
 {
   summary["analysis"] =
-      cfg.concrete.kind == ConcreteModelKind::linear
-          ? std::string("user mesh, linear elastic")
-          : "user mesh, HTC concrete (" + to_string(cfg.concrete.kind) + ")";
+      (cfg.concrete.kind == ConcreteModelKind::linear
+           ? std::string("user mesh, linear elastic")
+           : "user mesh, HTC concrete (" + to_string(cfg.concrete.kind) + ")") +
+      (cfg.wave ? ", rock with mass and a viscous-spring boundary" : "");
   summary["mesh_file"] = cfg.mesh_file.string();
   nlohmann::json regions = nlohmann::json::array();
   for (const Region& r : cfg.regions)

@@ -340,6 +340,22 @@ input::Schema dam_model_schema()
   s.string_array("supports.fixed", "[]", "-",
                  "facet groups with every displacement fixed; the ground "
                  "motion enters there (relative formulation)");
+  s.string_array("supports.viscous_spring", "[]", "-",
+                 "instead of supports.fixed: the far boundary of rock with "
+                 "mass (every region but the dam, one homogeneous rock), "
+                 "springs and dashpots on it, the ground motion as the "
+                 "outcrop motion of vertically incident waves");
+  s.real("foundation.spring_normal", "-1", "-",
+         "viscous-spring boundary: normal spring alpha_n G / R (-1: 1 in "
+         "2D, 4/3 in 3D)")
+      .between(-1, 10);
+  s.real("foundation.spring_tangential", "-1", "-",
+         "viscous-spring boundary: tangential spring alpha_t G / R (-1: "
+         "1/2 in 2D, 2/3 in 3D)")
+      .between(-1, 10);
+  s.real_array("foundation.centre", "[]", "m",
+               "viscous-spring boundary: the point R is measured from ([]: "
+               "the dam's lowest point)");
   s.string_array("reservoir.wetted", "[]", "-",
                  "facet groups the reservoir wets (hydrostatic pressure, "
                  "Westergaard added mass)");
@@ -644,10 +660,13 @@ void read_roles(const input::Case& c, DamModelConfig& cfg)
   const geometry::MeshFile& mesh = *cfg.mesh;
   cfg.regions = read_regions(c, mesh);
   cfg.fixed = facet_groups(c, mesh, "supports.fixed");
-  if (cfg.fixed.empty())
-    c.fail("supports.fixed", "is empty",
-           "the facet groups where the model is fixed (the foundation's far "
-           "boundary, or the dam base): " +
+  cfg.viscous_spring = facet_groups(c, mesh, "supports.viscous_spring");
+  if (cfg.fixed.empty() == cfg.viscous_spring.empty())
+    c.fail(cfg.fixed.empty() ? "supports.fixed" : "supports.viscous_spring",
+           cfg.fixed.empty() ? "is empty" : "is given with supports.fixed",
+           "either the facet groups where the model is fixed (the "
+           "foundation's far boundary, or the dam base) or those of a "
+           "viscous-spring boundary: " +
                name_list(mesh.groups, mesh.tdim - 1));
   cfg.wetted = facet_groups(c, mesh, "reservoir.wetted");
   cfg.floor = facet_groups(c, mesh, "reservoir.floor");
@@ -668,6 +687,7 @@ void read_roles(const input::Case& c, DamModelConfig& cfg)
   for (const auto& [key, groups] :
        {std::pair{"reservoir.wetted", cfg.wetted},
         std::pair{"reservoir.floor", cfg.floor},
+        std::pair{"supports.viscous_spring", cfg.viscous_spring},
         std::pair{"loads.traction_groups", c.strings("loads.traction_groups")}})
   {
     for (const auto& g : groups)
@@ -683,16 +703,18 @@ void read_roles(const input::Case& c, DamModelConfig& cfg)
   }
   // A facet group has one role.
   std::map<std::string, std::string> role;
-  for (const auto& [key, groups] : {std::pair{"supports.fixed", &cfg.fixed},
-                                    std::pair{"reservoir.wetted", &cfg.wetted},
-                                    std::pair{"reservoir.floor", &cfg.floor}})
+  for (const auto& [key, groups] :
+       {std::pair{"supports.fixed", &cfg.fixed},
+        std::pair{"supports.viscous_spring", &cfg.viscous_spring},
+        std::pair{"reservoir.wetted", &cfg.wetted},
+        std::pair{"reservoir.floor", &cfg.floor}})
   {
     for (const auto& g : *groups)
     {
       if (role.count(g))
         c.fail(key, "names \"" + g + "\", which " + role[g] + " names too",
                "each facet group in one of supports.fixed, "
-               "reservoir.wetted, reservoir.floor");
+               "supports.viscous_spring, reservoir.wetted, reservoir.floor");
       role[g] = key;
     }
   }
@@ -814,6 +836,7 @@ DamModelConfig read_dam_model_config(const input::Case& c)
                "\" (contact joints on HTC concrete are not available yet)",
            "material.model = \"elastic\" with contact joints, or bonded "
            "joints with the concrete model");
+  read_wave_foundation(c, cfg);
   return cfg;
 }
 

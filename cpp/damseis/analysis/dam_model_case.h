@@ -8,6 +8,7 @@
 #include "concrete_settings.h"
 #include "joint_contact_keys.h"
 #include "seismic_settings.h"
+#include "wave_foundation.h"
 #include <array>
 #include <damseis/fem/elastic_model.h>
 #include <damseis/geometry/mesh_file.h>
@@ -15,6 +16,7 @@
 #include <damseis/joint/static_contact.h>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -65,7 +67,11 @@ struct DamModelConfig
   int order = 2;
   fem::PlaneMode plane = fem::PlaneMode::plane_strain;
   std::vector<Region> regions;
-  std::vector<std::string> fixed;  ///< facet groups with every dof fixed
+  std::vector<std::string> fixed; ///< facet groups with every dof fixed
+  /// Facet groups of a viscous-spring boundary (instead of `fixed`), and
+  /// the foundation it makes (rock with mass, wave input).
+  std::vector<std::string> viscous_spring;
+  std::optional<WaveFoundation> wave;
   std::vector<std::string> wetted; ///< facet groups the reservoir wets
   std::vector<std::string> floor;  ///< reservoir floor (reservoir.load_floor)
   /// Joints: (side 1, side 2) facet groups of duplicated nodes; tied, or
@@ -100,6 +106,12 @@ input::Schema dam_model_schema();
 /// cell. Throws input::InputError (one line naming the file and key or
 /// group).
 DamModelConfig read_dam_model_config(const input::Case& c);
+
+/// supports.viscous_spring: the rock (every region but the dam's, one
+/// material with mass), the spring factors, the scattering centre, the
+/// model's bottom and the dam's lowest point as the reference surface
+/// (dam_model_foundation.cpp). Throws input::InputError.
+void read_wave_foundation(const input::Case& c, DamModelConfig& cfg);
 
 /// The tag a facet group of the configuration carries in its model's facet
 /// tags (the wetted faces and the floor take the tags the compiled forms

@@ -1,4 +1,5 @@
 #include "free_field_load.h"
+#include <chrono>
 #include <damseis/linalg/petsc_vectors.h>
 #include <dolfinx/common/IndexMap.h>
 #include <dolfinx/fem/DofMap.h>
@@ -56,6 +57,7 @@ FreeFieldLoad::FreeFieldLoad(const fem::ElasticModel& fe,
 
 void FreeFieldLoad::assemble(int k, Vec f) const
 {
+  const auto start = std::chrono::steady_clock::now();
   const double t = k * _dt;
   // The free field on the boundary: displacement, velocity, stresses.
   double *u = nullptr, *v = nullptr, *s = nullptr, *va = nullptr;
@@ -116,6 +118,9 @@ void FreeFieldLoad::assemble(int k, Vec f) const
     MatMult(_K, v_ref, _work.vec());
     VecAXPY(f, _damping.b_stiffness, _work.vec());
   }
+  _seconds +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+          .count();
 }
 
 void FreeFieldLoad::initial_acceleration(Vec a) const

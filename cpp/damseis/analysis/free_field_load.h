@@ -43,6 +43,8 @@ public:
   /// Zero: the free field starts at rest.
   void initial_acceleration(Vec a) const override;
   const boundary::VerticalFreeField& field() const { return _field; }
+  /// Wall time spent assembling the load so far [s].
+  double seconds() const { return _seconds; }
 
 private:
   boundary::VerticalFreeField _field;
@@ -50,6 +52,7 @@ private:
   dynamics::RayleighDamping _damping;
   double _dt;
   int _dim;
+  mutable double _seconds = 0.0;
   dolfinx::la::petsc::Matrix _Kb{nullptr, false}, _Cb{nullptr, false},
       _T{nullptr, false};
   dolfinx::la::petsc::Vector _sustained{nullptr, false};

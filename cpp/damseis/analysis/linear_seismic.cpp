@@ -95,7 +95,8 @@ private:
   std::unique_ptr<geometry::GroundSurface> _ground;
   Matrix _dashpots{nullptr, false};
   std::optional<boundary::VerticalFreeField> _free_field;
-  Mat _modal_tie = nullptr; ///< with contact: the joints bonded
+  double _free_field_seconds = 0.0; ///< assembling the free-field load
+  Mat _modal_tie = nullptr;         ///< with contact: the joints bonded
   Matrix _K_bonded{nullptr, false}, _M_bonded{nullptr, false};
   Matrix _mpc{nullptr, false}; ///< P2 contact: the midside constraints
   std::optional<joint::PairSet> _pairs;
@@ -340,6 +341,7 @@ void LinearSeismicAnalysis::time_history()
   }
   const std::unique_ptr<engine::DynamicLoad> ground =
       seismic_load(_contact ? _F.vec() : nullptr);
+  auto* free_field = dynamic_cast<const FreeFieldLoad*>(ground.get());
   // Tractions with their histories on top of the ground motion's load.
   const LoadWithTimedTerms load(*ground, _loads.timed, _tie);
 
@@ -364,6 +366,8 @@ void LinearSeismicAnalysis::time_history()
   add_recorders(history);
   // (A restart takes its state from the checkpoint.)
   _run = history.run(_s.restart ? engine::InitialState{} : initial_state());
+  if (free_field)
+    _free_field_seconds = free_field->seconds();
 }
 
 engine::InitialState LinearSeismicAnalysis::initial_state()
@@ -601,8 +605,11 @@ json LinearSeismicAnalysis::results()
     summary["joints"]["initial_gap_m"] = gaps;
   }
   if (_wave)
+  {
     summary["foundation"] =
         wave_foundation_summary(*_wave, *_free_field, _boundary->measure());
+    summary["foundation"]["free_field_load_seconds"] = _free_field_seconds;
+  }
   summary["wall_seconds"] = seconds_since(_wall_start);
   print_summary_line(_comm, summary);
   return summary;
