@@ -33,7 +33,6 @@ expect arch_reservoir_above_crest 'arch_dam\.toml.*reservoir\.level' --set reser
 expect arch_modulus_implausible 'arch_dam\.toml.*material\.E' --set material.E=1e300
 expect arch_study_unknown_joint 'arch_dam\.toml.*study\.joints.*"DGX".*not a candidate joint' --set 'study.joints=[none, DGX]'
 expect arch_study_repeated_joint 'arch_dam\.toml.*study\.joints.*"DGD".*repeated' --set 'study.joints=[DGD]'
-expect arch_viscous_spring_with_contact 'arch_dam\.toml.*foundation\.boundary.*contact joints' --set foundation.boundary=viscous_spring --set joints.model=contact
 expect arch_foundation_study_with_joint_study 'arch_dam\.toml.*study\.foundation.*study\.joints' --set study.foundation=true --set 'study.joints=[none, DGJ]'
 expect arch_foundation_ratios_empty 'arch_dam\.toml.*study\.foundation_ratios.*empty' --set study.foundation=true --set 'study.foundation_ratios=[]'
 expect arch_rock_density_implausible 'arch_dam\.toml.*rock\.rho' --set rock.rho=1e9

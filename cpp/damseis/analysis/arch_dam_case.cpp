@@ -222,12 +222,6 @@ ArchDamConfig read_arch_dam_config(const input::Case& c)
       c.fail("study.foundation", "is given with study.joints",
              "one study at a time");
   }
-  if ((viscous_spring || !a.foundation_ratios.empty()) &&
-      a.joints == JointModel::contact)
-    c.fail(viscous_spring ? "foundation.boundary" : "study.foundation",
-           "the viscous-spring boundary is not yet available with contact "
-           "joints",
-           "joints.model = \"bonded\" or foundation.boundary = \"fixed\"");
   if (viscous_spring)
     a = with_foundation(a, a.rock.E, true);
   return a;

@@ -1,5 +1,6 @@
 #include "free_field_load.h"
 #include <chrono>
+#include <damseis/linalg/duplicate_matrix.h>
 #include <damseis/linalg/petsc_vectors.h>
 #include <dolfinx/common/IndexMap.h>
 #include <dolfinx/fem/DofMap.h>
@@ -31,10 +32,28 @@ FreeFieldLoad::FreeFieldLoad(const fem::ElasticModel& fe,
   _work = linalg::column_vector(K);
   if (tie)
   {
+    // The restriction of a continuous field onto the reduced unknowns:
+    // each takes the mean of the dofs it alone gives (tied copies, or the
+    // dof itself), not the dofs a constraint interpolates (P2 midside
+    // nodes of contact pairs).
+    _pick = Matrix(linalg::duplicate_matrix(tie, MAT_COPY_VALUES), false);
+    PetscInt lo = 0, hi = 0;
+    MatGetOwnershipRange(_pick.mat(), &lo, &hi);
+    std::vector<PetscInt> shared;
+    for (PetscInt row = lo; row < hi; ++row)
+    {
+      PetscInt n = 0;
+      MatGetRow(_pick.mat(), row, &n, nullptr, nullptr);
+      if (n > 1)
+        shared.push_back(row);
+      MatRestoreRow(_pick.mat(), row, &n, nullptr, nullptr);
+    }
+    MatZeroRows(_pick.mat(), static_cast<PetscInt>(shared.size()),
+                shared.data(), 0.0, nullptr, nullptr);
     _v_r = linalg::column_vector(K);
     _count = linalg::column_vector(K);
     VecSet(_v_all.vec(), 1.0);
-    MatMultTranspose(tie, _v_all.vec(), _count.vec());
+    MatMultTranspose(_pick.mat(), _v_all.vec(), _count.vec());
   }
   const auto& map = *fe.V()->dofmap()->index_map;
   const std::int32_t n = map.size_local();
@@ -104,7 +123,7 @@ void FreeFieldLoad::assemble(int k, Vec f) const
   Vec v_ref = _v_all.vec();
   if (_tie)
   {
-    MatMultTranspose(_tie, _v_all.vec(), _v_r.vec());
+    MatMultTranspose(_pick.mat(), _v_all.vec(), _v_r.vec());
     VecPointwiseDivide(_v_r.vec(), _v_r.vec(), _count.vec());
     v_ref = _v_r.vec();
   }

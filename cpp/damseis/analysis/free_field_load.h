@@ -65,8 +65,10 @@ private:
   /// at every node.
   dolfinx::la::petsc::Vector _u_b{nullptr, false}, _v_b{nullptr, false},
       _s_b{nullptr, false}, _v_all{nullptr, false}, _f_full{nullptr, false};
-  /// With ties: the velocity on the tied unknowns, the number of dofs
-  /// tied into each (P^T 1), a work vector of the system's layout.
+  /// With ties: P with the rows of constrained dofs (more than one entry)
+  /// zeroed, the velocity on the tied unknowns, the number of dofs each
+  /// takes its value from, a work vector of the system's layout.
+  dolfinx::la::petsc::Matrix _pick{nullptr, false};
   dolfinx::la::petsc::Vector _v_r{nullptr, false}, _count{nullptr, false},
       _work{nullptr, false};
 };

@@ -153,6 +153,8 @@ LinearSeismicAnalysis::LinearSeismicAnalysis(fem::ElasticModel& fe,
     set_up_wave_foundation(sys.K.mat());
   if (_contact)
     set_up_contact(sys);
+  if (_dashpots.mat() && _mpc.mat()) // P2 contact: on the reduced unknowns
+    _dashpots = Matrix(fem::reduce_to_tied(_dashpots.mat(), _mpc.mat()), false);
   _K = std::move(sys.K);
   _M = std::move(sys.M);
   _F = std::move(sys.F_static);
@@ -163,10 +165,10 @@ LinearSeismicAnalysis::LinearSeismicAnalysis(fem::ElasticModel& fe,
 
 void LinearSeismicAnalysis::set_up_wave_foundation(Mat K)
 {
-  if (_contact || _loads.initial_velocity)
+  if (_loads.initial_velocity)
     throw std::invalid_argument(
         "a foundation with a viscous-spring boundary does not yet take "
-        "contact joints or an initial velocity");
+        "an initial velocity");
   _boundary = std::make_unique<fem::ViscousBoundary>(
       _fe, *_fe.model().facet_tags, _wave->boundary_tags, _wave->centre,
       _wave->factors);
@@ -324,9 +326,12 @@ void LinearSeismicAnalysis::time_history()
         std::make_shared<joint::CondensedContact>(*_pairs, _contact->ncp);
     const joint::StaticContactResult& st = *_static_contact;
     contact->set_state(st.g0, st.w, st.p, st.states, st.broken);
+    std::vector<Mat> dashpots;
+    if (_dashpots.mat())
+      dashpots.push_back(_dashpots.mat());
     auto stepper = std::make_unique<joint::ContactStepper>(
         _M.mat(), _K.mat(), _modal->damping, _s.scheme, contact,
-        _u_static.vec(), _contact->restitution);
+        _u_static.vec(), _contact->restitution, dashpots);
     _contact_stepper = stepper.get();
     _stepper = std::move(stepper);
   }

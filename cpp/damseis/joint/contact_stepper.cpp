@@ -22,10 +22,11 @@ double sum(Vec x)
 ContactStepper::ContactStepper(Mat M, Mat K, dynamics::RayleighDamping damping,
                                dynamics::TimeScheme scheme,
                                std::shared_ptr<CondensedContact> contact,
-                               Vec u_static, double restitution)
+                               Vec u_static, double restitution,
+                               const std::vector<Mat>& extra_damping)
     : engine::LinearStepper(M, K, damping, scheme,
-                            linalg::Factorization::automatic, {}, contact,
-                            u_static),
+                            linalg::Factorization::automatic, extra_damping,
+                            contact, u_static),
       _contact(std::move(contact)), _e(restitution)
 {
   // The pair unknowns gathered on rank 0.

@@ -28,11 +28,13 @@ public:
   /// dynamics::LinearNewmark; `contact` holds the pairs and the contact
   /// state the run starts from (the static stage's); `u_static` the
   /// displacement it starts from (copied); `restitution` e in [0, 1], or
-  /// negative for no impact correction.
+  /// negative for no impact correction; `extra_damping`: damping matrices
+  /// beside the Rayleigh damping (a viscous-spring boundary's dashpots).
   ContactStepper(Mat M, Mat K, dynamics::RayleighDamping damping,
                  dynamics::TimeScheme scheme,
                  std::shared_ptr<CondensedContact> contact, Vec u_static,
-                 double restitution);
+                 double restitution,
+                 const std::vector<Mat>& extra_damping = {});
   ~ContactStepper() override;
 
   dynamics::StepReport step(Vec f) override;
