@@ -190,10 +190,9 @@ TEST(LayeredColumn, HomogeneousEqualsClosedFormAndTwoLayersTransmit)
   std::array<std::vector<double>, 3> incident;
   incident[0] = pulse_acceleration(A, T, dt, steps * dt);
   incident[1] = pulse_acceleration(0.5 * A, T, dt, steps * dt);
-  const LayeredColumn column(-100.0, {{0.0, rock}}, 2, incident, dt, steps,
-                             1.0);
   std::array<SampledMotion, 3> waves{
       SampledMotion(incident[0], dt), SampledMotion(incident[1], dt), {}};
+  const LayeredColumn column(-100.0, {{0.0, rock}}, 2, waves, dt, steps, 1.0);
   const VerticalFreeField exact(rock, 2, -100.0, 0.0, waves);
   double worst = 0.0;
   for (int k = 0; k <= steps; ++k)
@@ -217,8 +216,9 @@ TEST(LayeredColumn, HomogeneousEqualsClosedFormAndTwoLayersTransmit)
   const int steps2 = 500;
   std::array<std::vector<double>, 3> incident2;
   incident2[0] = pulse_acceleration(A, T, dt2, steps2 * dt2);
-  const LayeredColumn two(-160.0, {{-60.0, rock}, {0.0, soft}}, 2, incident2,
-                          dt2, steps2, 1.0);
+  const LayeredColumn two(-160.0, {{-60.0, rock}, {0.0, soft}}, 2,
+                          {SampledMotion(incident2[0], dt2), {}, {}}, dt2,
+                          steps2, 1.0);
   const double z1 = rock.rho * rock.cs(), z2 = soft.rho * soft.cs();
   const double transmission = 2 * z1 / (z1 + z2);
   double peak = 0.0;

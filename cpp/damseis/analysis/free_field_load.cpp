@@ -13,9 +13,9 @@ using dolfinx::la::petsc::Vector;
 FreeFieldLoad::FreeFieldLoad(const fem::ElasticModel& fe,
                              const fem::ViscousBoundary& b,
                              const geometry::GroundSurface& ground,
-                             boundary::VerticalFreeField field, Mat M, Mat K,
-                             dynamics::RayleighDamping damping, double dt,
-                             Mat tie, Vec sustained)
+                             std::shared_ptr<const boundary::FreeField> field,
+                             Mat M, Mat K, dynamics::RayleighDamping damping,
+                             double dt, Mat tie, Vec sustained)
     : _field(std::move(field)), _M(M), _K(K), _tie(tie), _damping(damping),
       _dt(dt), _dim(fe.dim())
 {
@@ -58,12 +58,12 @@ FreeFieldLoad::FreeFieldLoad(const fem::ElasticModel& fe,
   const auto& map = *fe.V()->dofmap()->index_map;
   const std::int32_t n = map.size_local();
   const std::vector<double> x = fe.V()->tabulate_dof_coordinates(false);
-  _z.resize(n);
+  _x.resize(n);
   _z_ground.resize(n);
   for (std::int32_t i = 0; i < n; ++i)
   {
-    _z[i] = x[3 * i + _dim - 1];
-    _z_ground[i] = ground.height({x[3 * i], x[3 * i + 1], x[3 * i + 2]});
+    _x[i] = {x[3 * i], x[3 * i + 1], x[3 * i + 2]};
+    _z_ground[i] = ground.height(_x[i]);
   }
   _fixed.assign(n, 0);
   for (std::int32_t dof : fe.fixed_dofs())
@@ -85,7 +85,7 @@ void FreeFieldLoad::assemble(int k, Vec f) const
   VecGetArray(_s_b.vec(), &s);
   for (std::int32_t i : _boundary)
   {
-    const boundary::FreeFieldState st = _field.at(_z[i], _z_ground[i], t);
+    const boundary::FreeFieldState st = _field->at(_x[i], _z_ground[i], k, t);
     for (int c = 0; c < _dim; ++c)
     {
       u[i * _dim + c] = st.u[c];
@@ -98,11 +98,11 @@ void FreeFieldLoad::assemble(int k, Vec f) const
   VecRestoreArray(_s_b.vec(), &s);
   // Its velocity at every free node (the damping's reference).
   VecGetArray(_v_all.vec(), &va);
-  for (std::size_t i = 0; i < _z.size(); ++i)
+  for (std::size_t i = 0; i < _x.size(); ++i)
   {
     const std::array<double, 3> w =
         _fixed[i] ? std::array<double, 3>{}
-                  : _field.velocity(_z[i], _z_ground[i], t);
+                  : _field->velocity(_x[i], _z_ground[i], k, t);
     for (int c = 0; c < _dim; ++c)
       va[i * _dim + c] = w[c];
   }

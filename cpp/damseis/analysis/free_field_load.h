@@ -36,18 +36,18 @@ public:
   /// (copied, system layout), or null. The matrices must outlive the load.
   FreeFieldLoad(const fem::ElasticModel& fe, const fem::ViscousBoundary& b,
                 const geometry::GroundSurface& ground,
-                boundary::VerticalFreeField field, Mat M, Mat K,
+                std::shared_ptr<const boundary::FreeField> field, Mat M, Mat K,
                 dynamics::RayleighDamping damping, double dt, Mat tie = nullptr,
                 Vec sustained = nullptr);
   void assemble(int k, Vec f) const override;
   /// Zero: the free field starts at rest.
   void initial_acceleration(Vec a) const override;
-  const boundary::VerticalFreeField& field() const { return _field; }
+  const boundary::FreeField& field() const { return *_field; }
   /// Wall time spent assembling the load so far [s].
   double seconds() const { return _seconds; }
 
 private:
-  boundary::VerticalFreeField _field;
+  std::shared_ptr<const boundary::FreeField> _field;
   Mat _M, _K, _tie;
   dynamics::RayleighDamping _damping;
   double _dt;
@@ -58,7 +58,8 @@ private:
   dolfinx::la::petsc::Vector _sustained{nullptr, false};
   /// Owned nodes: the vertical coordinate of each, its ground, whether it
   /// is fixed, and the owned nodes on the boundary.
-  std::vector<double> _z, _z_ground;
+  std::vector<std::array<double, 3>> _x;
+  std::vector<double> _z_ground;
   std::vector<std::int8_t> _fixed;
   std::vector<std::int32_t> _boundary;
   /// Work vectors: the free field's u, v, stresses on the boundary and v

@@ -25,6 +25,12 @@ std::map<int, fem::Material> section_materials(const GravityDamConfig& cfg)
   std::map<int, fem::Material> materials = {{tags::dam, dam}};
   if (cfg.section.foundation)
     materials[tags::foundation] = cfg.rock;
+  if (cfg.section.foundation_split != geometry::GravityDamSection::Split::none)
+  {
+    fem::Material second = cfg.rock;
+    second.E = cfg.rock_E2;
+    materials[tags::foundation_2] = second;
+  }
   return materials;
 }
 

@@ -87,6 +87,20 @@ input::Schema gravity_dam_schema()
       .between(1e7, 2e11);
   s.real("foundation.nu", "0.2", "-", "Poisson's ratio of the foundation rock")
       .between_exclusive(-1, 0.5);
+  s.string("foundation.split", "none", "-",
+           "the block in two rock regions: none; side_by_side (split under "
+           "the middle of the dam base: foundation.E on the left, "
+           "foundation.E2 on the right); layers (foundation.E above "
+           "foundation.split_depth, foundation.E2 below)",
+           {"none", "side_by_side", "layers"});
+  s.real("foundation.E2", "30e9", "Pa",
+         "Young's modulus of the second rock region (foundation.split)")
+      .between(1e7, 2e11);
+  s.real("foundation.split_depth", "0.0", "m",
+         "depth of the layers' interface below the base (0: half the "
+         "block's depth)")
+      .at_least(0)
+      .at_most(10000);
   s.real("foundation.mesh_size", "0.0", "m",
          "element size at the far boundaries (0: 2.5 x mesh.size; else at "
          "least mesh.size / 10)")
@@ -124,6 +138,10 @@ input::Schema gravity_dam_schema()
   s.real_array("study.foundation_ratios", "[0.5, 1.0, 2.0]", "-",
                "E_f / E_d of the table6 study")
       .between(0.01, 100);
+  s.boolean("study.table6_inhomogeneous", "false", "-",
+            "with study.table6: also the paper's cases 4 (E_f/E_d = 0.5 "
+            "and 1 side by side) and 5 (0.5 over 1 in layers, the "
+            "interface at half the block's depth), with interaction");
   s.boolean("study.table1", "false", "-",
             "run the elastic, plastic and viscoplastic models (subfolders) "
             "and write table1.csv/.md (the paper's Table 1); each model "
@@ -173,6 +191,19 @@ GravityDamConfig read_gravity_dam_config(const input::Case& c)
   s.foundation_width = c.real("foundation.width");
   s.foundation_depth = c.real("foundation.depth");
   s.foundation_mesh_size = c.real("foundation.mesh_size");
+  using Split = geometry::GravityDamSection::Split;
+  const std::string split = c.string("foundation.split");
+  s.foundation_split = split == "side_by_side" ? Split::side_by_side
+                       : split == "layers"     ? Split::layers
+                                               : Split::none;
+  s.split_depth = c.real("foundation.split_depth");
+  if (s.split_depth == 0.0)
+    s.split_depth = 0.5 * s.foundation_depth;
+  if (s.foundation_split == Split::layers &&
+      !(s.split_depth < s.foundation_depth))
+    c.fail("foundation.split_depth", "is not above the block's bottom",
+           "a depth below the base smaller than foundation.depth");
+  g.rock_E2 = c.real("foundation.E2");
   g.rock = {c.real("foundation.E"), c.real("foundation.nu"), 0.0};
   if (s.foundation && !(s.foundation_width > s.toe_x - s.heel_x))
   {
@@ -251,6 +282,7 @@ GravityDamConfig read_gravity_dam_config(const input::Case& c)
       c.fail("study.table6", "compares linear analyses",
              "material.model = \"linear\" and study.table1 = false");
     g.table6_ratios = c.reals("study.foundation_ratios");
+    g.table6_inhomogeneous = c.boolean("study.table6_inhomogeneous");
     if (g.table6_ratios.empty())
       c.fail("study.foundation_ratios", "is empty",
              "ratios E_f / E_d such as [0.5, 1.0, 2.0]");
@@ -287,6 +319,13 @@ GravityDamConfig with_foundation(const GravityDamConfig& cfg, double E_f,
             g.plane == fem::PlaneMode::plane_stress};
   w.z_base = s.base_y - s.foundation_depth;
   w.z_surface = s.base_y;
+  boundary::Rock second = w.rock;
+  second.E = g.rock_E2;
+  using Split = geometry::GravityDamSection::Split;
+  if (s.foundation_split == Split::side_by_side)
+    w.right = {{0.5 * (s.heel_x + s.toe_x), second}};
+  else if (s.foundation_split == Split::layers)
+    w.layers = {{s.base_y - s.split_depth, second}, {s.base_y, w.rock}};
   g.wave = w;
   g.seismic.gravity_regions = {tags::dam};
   return g;

@@ -30,6 +30,12 @@ struct GravityDamConfig
   /// The rock's density with mass and the viscous-spring factors (used
   /// with a viscous-spring boundary).
   double rock_rho = 2640.0;
+  /// The second rock region's modulus (a split block: the right half or
+  /// the lower layer).
+  double rock_E2 = 30e9;
+  /// study.table6_inhomogeneous: the paper's cases 4 and 5 after the
+  /// ratios.
+  bool table6_inhomogeneous = false;
   boundary::SpringFactors spring_factors{1.0, 0.5};
   /// study.table6: the foundation models side by side for these ratios
   /// Ef / Ed (empty: no study).

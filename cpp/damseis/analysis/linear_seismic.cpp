@@ -94,7 +94,7 @@ private:
   std::unique_ptr<fem::ViscousBoundary> _boundary;
   std::unique_ptr<geometry::GroundSurface> _ground;
   Matrix _dashpots{nullptr, false};
-  std::optional<boundary::VerticalFreeField> _free_field;
+  std::shared_ptr<const boundary::FreeField> _free_field;
   double _free_field_seconds = 0.0; ///< assembling the free-field load
   Mat _modal_tie = nullptr;         ///< with contact: the joints bonded
   Matrix _K_bonded{nullptr, false}, _M_bonded{nullptr, false};
@@ -186,9 +186,8 @@ void LinearSeismicAnalysis::set_up_wave_foundation(Mat K)
   for (int c = 0; c < _fe.dim(); ++c)
     if (_s.motion[c].active)
       outcrop[c] = _s.motion[c].acceleration;
-  _free_field = boundary::VerticalFreeField::from_outcrop(
-      _wave->rock, _fe.dim(), _wave->z_base, _wave->z_surface, outcrop,
-      _s.scheme.dt);
+  _free_field =
+      make_free_field(*_wave, _fe.dim(), outcrop, _s.scheme.dt, _s.steps);
   results::print(_comm, "foundation with mass, viscous-spring boundary (" +
                             std::to_string(_boundary->measure()) +
                             (_fe.dim() == 3 ? " m2" : " m") +
@@ -203,7 +202,7 @@ LinearSeismicAnalysis::seismic_load(Vec sustained) const
 {
   if (_wave)
     return std::make_unique<FreeFieldLoad>(
-        _fe, *_boundary, *_ground, *_free_field, _M.mat(), _K.mat(),
+        _fe, *_boundary, *_ground, _free_field, _M.mat(), _K.mat(),
         _modal->damping, _s.scheme.dt, _tie, sustained);
   return std::make_unique<GroundMotionLoad>(_fe, _s, _M.mat(), _tie, sustained);
 }
@@ -635,14 +634,13 @@ linear_seismic_analysis(fem::ElasticModel& fe, const SeismicSettings& s,
 }
 
 nlohmann::json wave_foundation_summary(const WaveFoundation& wave,
-                                       const boundary::VerticalFreeField& f,
+                                       const boundary::FreeField& f,
                                        double boundary_measure)
 {
   nlohmann::json corrected = nlohmann::json::array();
   for (int i = 0; i < 3; ++i)
     corrected.push_back(f.baseline_corrected(i));
-  return {{"model", "mass, viscous-spring boundary, vertically incident "
-                    "waves (free field of a homogeneous half-space)"},
+  return {{"model", "mass, viscous-spring boundary, " + f.description()},
           {"boundary_measure_m", boundary_measure},
           {"spring_factors", {wave.factors.normal, wave.factors.tangential}},
           {"scattering_centre_m", wave.centre},

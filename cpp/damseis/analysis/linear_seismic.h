@@ -91,7 +91,7 @@ inline nlohmann::json run_linear_seismic(fem::ElasticModel& fe,
 
 /// The summary's description of a wave foundation (boundary, rock, input).
 nlohmann::json wave_foundation_summary(const WaveFoundation& wave,
-                                       const boundary::VerticalFreeField& f,
+                                       const boundary::FreeField& f,
                                        double boundary_measure);
 } // namespace damseis::analysis
 

@@ -110,13 +110,13 @@ VerticalFreeField::VerticalFreeField(const Rock& rock, int dim, double z_base,
     throw std::invalid_argument("free field: the rock needs E > 0, rho > 0");
 }
 
-VerticalFreeField VerticalFreeField::from_outcrop(
-    const Rock& rock, int dim, double z_base, double z_surface,
-    const std::array<std::vector<double>, 3>& outcrop, double dt)
+std::array<SampledMotion, 3>
+incident_from_outcrop(const Rock& rock, int dim, double depth,
+                      const std::array<std::vector<double>, 3>& outcrop,
+                      double dt, std::array<bool, 3>& corrected)
 {
   std::array<SampledMotion, 3> incident;
-  std::array<bool, 3> corrected{};
-  const double depth = z_surface - z_base;
+  corrected = {};
   for (int i = 0; i < dim; ++i)
   {
     if (outcrop[i].empty())
@@ -133,9 +133,32 @@ VerticalFreeField VerticalFreeField::from_outcrop(
     const double delay = depth * (1.0 / rock.cs() - 1.0 / c);
     incident[i] = SampledMotion(std::move(a), dt, delay);
   }
+  return incident;
+}
+
+VerticalFreeField VerticalFreeField::from_outcrop(
+    const Rock& rock, int dim, double z_base, double z_surface,
+    const std::array<std::vector<double>, 3>& outcrop, double dt)
+{
+  std::array<bool, 3> corrected{};
+  std::array<SampledMotion, 3> incident = incident_from_outcrop(
+      rock, dim, z_surface - z_base, outcrop, dt, corrected);
   VerticalFreeField f(rock, dim, z_base, z_surface, std::move(incident));
   f._corrected = corrected;
   return f;
+}
+
+std::string VerticalFreeField::description() const
+{
+  return "vertically incident waves in a homogeneous half-space (c_s " +
+         std::to_string(_rock.cs()) + " m/s, c_p " +
+         std::to_string(_rock.cp()) + " m/s)";
+}
+
+std::string SideBySideFreeField::description() const
+{
+  return "two rocks side by side at x = " + std::to_string(_x) + ": " +
+         _left->description() + " | " + _right->description();
 }
 
 FreeFieldState VerticalFreeField::at(double z, double zs, double t) const

@@ -24,7 +24,10 @@
 #pragma once
 
 #include "viscous_spring.h"
+#include <algorithm>
 #include <array>
+#include <memory>
+#include <string>
 #include <vector>
 
 namespace damseis::boundary
@@ -59,7 +62,40 @@ struct FreeFieldState
   std::array<double, 3> u{}, v{}, s{};
 };
 
-class VerticalFreeField
+/// A free field as the finite element load reads it at its nodes.
+class FreeField
+{
+public:
+  virtual ~FreeField() = default;
+  /// The state at x (the last coordinate vertical), in a column whose
+  /// ground is at z_ground, at step k, time t = k dt.
+  virtual FreeFieldState at(const std::array<double, 3>& x, double z_ground,
+                            int k, double t) const = 0;
+  /// The velocity alone.
+  virtual std::array<double, 3> velocity(const std::array<double, 3>& x,
+                                         double z_ground, int k, double t) const
+  {
+    return at(x, z_ground, k, t).v;
+  }
+  /// How much later the free surface moves than the outcrop record [s].
+  virtual double surface_delay() const = 0;
+  /// Whether the record of component i was baseline corrected.
+  virtual bool baseline_corrected(int i) const = 0;
+  /// One line for the summary.
+  virtual std::string description() const = 0;
+};
+
+/// The incident wave at the base of a column of `rock` and depth
+/// z_surface - z_base whose free surface moves with the outcrop record
+/// (see the file's comment): half of it, baseline corrected if it does
+/// not end at rest, each component delayed so that all arrive at the
+/// surface together. `corrected[i]`: whether component i was corrected.
+std::array<SampledMotion, 3>
+incident_from_outcrop(const Rock& rock, int dim, double depth,
+                      const std::array<std::vector<double>, 3>& outcrop,
+                      double dt, std::array<bool, 3>& corrected);
+
+class VerticalFreeField : public FreeField
 {
 public:
   /// `incident`: the incident wave's acceleration at the base per
@@ -74,7 +110,18 @@ public:
   from_outcrop(const Rock& rock, int dim, double z_base, double z_surface,
                const std::array<std::vector<double>, 3>& outcrop, double dt);
   /// Whether from_outcrop corrected the baseline of component i.
-  bool baseline_corrected(int i) const { return _corrected[i]; }
+  bool baseline_corrected(int i) const override { return _corrected[i]; }
+  FreeFieldState at(const std::array<double, 3>& x, double z_ground, int,
+                    double t) const override
+  {
+    return at(x[_dim - 1], z_ground, t);
+  }
+  std::array<double, 3> velocity(const std::array<double, 3>& x,
+                                 double z_ground, int, double t) const override
+  {
+    return velocity(x[_dim - 1], z_ground, t);
+  }
+  std::string description() const override;
 
   /// The state at height z (<= z_surface; above it, the surface's) and
   /// time t.
@@ -90,7 +137,7 @@ public:
   /// How much later the surface (at z_surface) moves than the outcrop
   /// record. A column whose ground is lower sees the same incident wave
   /// earlier reflected.
-  double surface_delay() const { return (_zs - _zb) / _rock.cs(); }
+  double surface_delay() const override { return (_zs - _zb) / _rock.cs(); }
   const Rock& rock() const { return _rock; }
   double z_base() const { return _zb; }
   double z_surface() const { return _zs; }
@@ -101,5 +148,41 @@ private:
   double _zb, _zs;
   std::array<SampledMotion, 3> _incident;
   std::array<bool, 3> _corrected{};
+};
+
+/// Two free fields side by side: `left` where x[0] < x_split, `right`
+/// elsewhere (rock regions side by side, each column its own).
+class SideBySideFreeField : public FreeField
+{
+public:
+  SideBySideFreeField(double x_split, std::shared_ptr<const FreeField> left,
+                      std::shared_ptr<const FreeField> right)
+      : _x(x_split), _left(std::move(left)), _right(std::move(right))
+  {
+  }
+  FreeFieldState at(const std::array<double, 3>& x, double z_ground, int k,
+                    double t) const override
+  {
+    return (x[0] < _x ? *_left : *_right).at(x, z_ground, k, t);
+  }
+  std::array<double, 3> velocity(const std::array<double, 3>& x,
+                                 double z_ground, int k,
+                                 double t) const override
+  {
+    return (x[0] < _x ? *_left : *_right).velocity(x, z_ground, k, t);
+  }
+  double surface_delay() const override
+  {
+    return std::max(_left->surface_delay(), _right->surface_delay());
+  }
+  bool baseline_corrected(int i) const override
+  {
+    return _left->baseline_corrected(i);
+  }
+  std::string description() const override;
+
+private:
+  double _x;
+  std::shared_ptr<const FreeField> _left, _right;
 };
 } // namespace damseis::boundary

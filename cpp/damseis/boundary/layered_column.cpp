@@ -9,9 +9,9 @@ namespace damseis::boundary
 {
 LayeredColumn::LayeredColumn(double z_base, const std::vector<Layer>& layers,
                              int dim,
-                             const std::array<std::vector<double>, 3>& incident,
+                             const std::array<SampledMotion, 3>& incident,
                              double dt, int steps, double h_max)
-    : _dim(dim), _steps(steps)
+    : _dim(dim), _steps(steps), _layers(layers.size())
 {
   if (layers.empty() || !(h_max > 0.0) || !(dt > 0.0) || steps < 0 ||
       (dim != 2 && dim != 3))
@@ -35,6 +35,7 @@ LayeredColumn::LayeredColumn(double z_base, const std::vector<Layer>& layers,
     }
     c_max = std::max(c_max, l.rock.cp());
     h_min = std::min(h_min, h);
+    _delay += (l.top - bottom) / l.rock.cs();
   }
   // Sub-steps: a step no longer than a wave's crossing of an element.
   _m = std::max(1, static_cast<int>(std::ceil(dt * c_max / h_min)));
@@ -53,8 +54,34 @@ LayeredColumn::LayeredColumn(double z_base, const std::vector<Layer>& layers,
     }
     const double rho_c =
         bottom_rock.rho * (vertical ? bottom_rock.cp() : bottom_rock.cs());
-    solve(c, modulus, density, SampledMotion(incident[c], dt), rho_c, dt);
+    solve(c, modulus, density, incident[c], rho_c, dt);
   }
+}
+
+LayeredColumn LayeredColumn::from_outcrop(
+    double z_base, const std::vector<Layer>& layers, int dim,
+    const std::array<std::vector<double>, 3>& outcrop, double dt, int steps)
+{
+  if (layers.empty())
+    throw std::invalid_argument("layered column: no layers");
+  std::array<bool, 3> corrected{};
+  const double depth = layers.back().top - z_base;
+  const std::array<SampledMotion, 3> incident = incident_from_outcrop(
+      layers.front().rock, dim, depth, outcrop, dt, corrected);
+  double cs_min = HUGE_VAL;
+  for (const Layer& l : layers)
+    cs_min = std::min(cs_min, l.rock.cs());
+  LayeredColumn column(z_base, layers, dim, incident, dt, steps,
+                       cs_min / 25.0 / 20.0);
+  column._corrected = corrected;
+  return column;
+}
+
+std::string LayeredColumn::description() const
+{
+  return "vertically incident waves in " + std::to_string(_layers) +
+         " horizontal rock layers (a 1D column of " +
+         std::to_string(_z.size()) + " nodes)";
 }
 
 void LayeredColumn::solve(int c, const std::vector<double>& modulus,

@@ -24,19 +24,36 @@ struct Layer
   Rock rock;
 };
 
-class LayeredColumn
+class LayeredColumn : public FreeField
 {
 public:
   /// Layers from the bottom z_base up (tops increasing; the last top is
-  /// the free surface), at most `h_max` per element; the incident wave's
-  /// acceleration per component (empty: none) at the steps k dt, k =
-  /// 0..steps; `dim` 2 or 3 (the last component vertical).
+  /// the free surface), at most `h_max` per element; the incident wave per
+  /// component (empty: none), read at the steps k dt, k = 0..steps; `dim`
+  /// 2 or 3 (the last component vertical).
   LayeredColumn(double z_base, const std::vector<Layer>& layers, int dim,
-                const std::array<std::vector<double>, 3>& incident, double dt,
+                const std::array<SampledMotion, 3>& incident, double dt,
                 int steps, double h_max);
+
+  /// The column whose incident wave is that of the outcrop record of its
+  /// lowest rock (incident_from_outcrop; the surface moves later by the
+  /// layers' S travel time), elements of at most 1/20 of the shortest S
+  /// wavelength at 25 Hz.
+  static LayeredColumn
+  from_outcrop(double z_base, const std::vector<Layer>& layers, int dim,
+               const std::array<std::vector<double>, 3>& outcrop, double dt,
+               int steps);
 
   /// The state at height z (clamped to the column) at step k.
   FreeFieldState at(double z, int k) const;
+  FreeFieldState at(const std::array<double, 3>& x, double, int k,
+                    double) const override
+  {
+    return at(x[_dim - 1], k);
+  }
+  double surface_delay() const override { return _delay; }
+  bool baseline_corrected(int i) const override { return _corrected[i]; }
+  std::string description() const override;
   double z_surface() const { return _z.back(); }
   int nodes() const { return static_cast<int>(_z.size()); }
   int substeps() const { return _m; }
@@ -47,7 +64,9 @@ private:
   /// Per component, per step, per node: u, v and the stress sigma_{i,z}
   /// (nodal: the mean of the adjacent elements; 0 at the free surface).
   std::array<std::vector<double>, 3> _u, _v, _s;
-  std::array<bool, 3> _active{};
+  std::array<bool, 3> _active{}, _corrected{};
+  double _delay = 0.0; ///< the layers' S travel time
+  std::size_t _layers = 0;
   void solve(int c, const std::vector<double>& modulus,
              const std::vector<double>& density, const SampledMotion& wave,
              double rho_c_bottom, double dt);

@@ -81,6 +81,11 @@ void validate(const GravityDamSection& s)
                 s.foundation_mesh_size >= 0,
             "foundation_mesh_size must be >= 0 (0 -> 2.5 x mesh_size), got " +
                 str(s.foundation_mesh_size));
+    if (s.foundation_split == GravityDamSection::Split::layers)
+      require(std::isfinite(s.split_depth) and s.split_depth > 0 and
+                  s.split_depth < s.foundation_depth,
+              "split_depth must be between 0 and foundation_depth, got " +
+                  str(s.split_depth));
   }
 }
 
@@ -99,7 +104,20 @@ void build_and_mesh(const GravityDamSection& s)
   const int crest_down = geo::addPoint(s.crest_down_x, s.crest_y, 0, lc);
   const int crest_up = geo::addPoint(s.heel_x, s.crest_y, 0, lc);
 
-  const int base = geo::addLine(heel, toe);
+  // The base, in two at its middle when the block is split side by side.
+  using Split = GravityDamSection::Split;
+  const bool side_by_side =
+      s.foundation && s.foundation_split == Split::side_by_side;
+  const double xc = 0.5 * (s.heel_x + s.toe_x);
+  std::vector<int> base;
+  int base_mid = -1;
+  if (side_by_side)
+  {
+    base_mid = geo::addPoint(xc, s.base_y, 0, lc);
+    base = {geo::addLine(heel, base_mid), geo::addLine(base_mid, toe)};
+  }
+  else
+    base = {geo::addLine(heel, toe)};
   const int down1 = geo::addLine(toe, neck);
   const int down2 = geo::addLine(neck, crest_down);
   const int crest = geo::addLine(crest_down, crest_up);
@@ -112,19 +130,20 @@ void build_and_mesh(const GravityDamSection& s)
   else
     upstream = {geo::addLine(crest_up, heel)};
 
-  std::vector<int> dam_loop = {base, down1, down2, crest};
+  std::vector<int> dam_loop = base;
+  dam_loop.insert(dam_loop.end(), {down1, down2, crest});
   dam_loop.insert(dam_loop.end(), upstream.begin(), upstream.end());
   const int dam =
       geo::addPlaneSurface({geo::addCurveLoop(dam_loop, -1, false)});
 
-  // Foundation block below the dam, sharing the base curve
-  int foundation = -1;
-  int bottom = -1, left = -1, right = -1, floor = -1, top_down = -1;
+  // Foundation block below the dam, sharing the base curve; in two regions
+  // if split.
+  std::vector<int> foundation, foundation_2, bottom, left, right;
+  int floor = -1, top_down = -1;
   double lc_far = lc;
   if (s.foundation)
   {
     lc_far = s.foundation_mesh_size > 0 ? s.foundation_mesh_size : 2.5 * lc;
-    const double xc = 0.5 * (s.heel_x + s.toe_x);
     const double xl = xc - 0.5 * s.foundation_width;
     const double xr = xc + 0.5 * s.foundation_width;
     const double yb = s.base_y - s.foundation_depth;
@@ -132,13 +151,44 @@ void build_and_mesh(const GravityDamSection& s)
     const int br = geo::addPoint(xr, yb, 0, lc_far);
     const int tr = geo::addPoint(xr, s.base_y, 0, lc_far);
     const int tl = geo::addPoint(xl, s.base_y, 0, lc_far);
-    bottom = geo::addLine(bl, br);
-    right = geo::addLine(br, tr);
     top_down = geo::addLine(tr, toe);
     floor = geo::addLine(heel, tl);
-    left = geo::addLine(tl, bl);
-    foundation = geo::addPlaneSurface({geo::addCurveLoop(
-        {bottom, right, top_down, -base, floor, left}, -1, false)});
+    if (side_by_side)
+    {
+      const int mb = geo::addPoint(xc, yb, 0, lc_far);
+      bottom = {geo::addLine(bl, mb), geo::addLine(mb, br)};
+      const int split = geo::addLine(mb, base_mid);
+      right = {geo::addLine(br, tr)};
+      left = {geo::addLine(tl, bl)};
+      foundation = {geo::addPlaneSurface({geo::addCurveLoop(
+          {bottom[0], split, -base[0], floor, left[0]}, -1, false)})};
+      foundation_2 = {geo::addPlaneSurface({geo::addCurveLoop(
+          {bottom[1], right[0], top_down, -base[1], -split}, -1, false)})};
+    }
+    else if (s.foundation_split == Split::layers)
+    {
+      const double ys = s.base_y - s.split_depth;
+      const int ml = geo::addPoint(xl, ys, 0, lc_far);
+      const int mr = geo::addPoint(xr, ys, 0, lc_far);
+      bottom = {geo::addLine(bl, br)};
+      const int interface = geo::addLine(ml, mr);
+      right = {geo::addLine(br, mr), geo::addLine(mr, tr)};
+      left = {geo::addLine(tl, ml), geo::addLine(ml, bl)};
+      foundation = {geo::addPlaneSurface({geo::addCurveLoop(
+          {interface, right[1], top_down, -base[0], floor, left[0]}, -1,
+          false)})};
+      foundation_2 = {geo::addPlaneSurface({geo::addCurveLoop(
+          {bottom[0], right[0], -interface, left[1]}, -1, false)})};
+    }
+    else
+    {
+      bottom = {geo::addLine(bl, br)};
+      right = {geo::addLine(br, tr)};
+      left = {geo::addLine(tl, bl)};
+      foundation = {geo::addPlaneSurface({geo::addCurveLoop(
+          {bottom[0], right[0], top_down, -base[0], floor, left[0]}, -1,
+          false)})};
+    }
   }
   geo::synchronize();
 
@@ -153,12 +203,16 @@ void build_and_mesh(const GravityDamSection& s)
   group(1, upstream, tags::upstream_face);
   group(1, {down1, down2}, tags::downstream_face);
   group(1, {crest}, tags::crest);
-  group(1, {base}, tags::dam_base);
+  group(1, base, tags::dam_base);
   if (s.foundation)
   {
-    group(2, {foundation}, tags::foundation);
-    group(1, {bottom}, tags::foundation_bottom);
-    group(1, {left, right}, tags::foundation_sides);
+    group(2, foundation, tags::foundation);
+    if (!foundation_2.empty())
+      group(2, foundation_2, tags::foundation_2);
+    group(1, bottom, tags::foundation_bottom);
+    std::vector<int> sides = left;
+    sides.insert(sides.end(), right.begin(), right.end());
+    group(1, sides, tags::foundation_sides);
     group(1, {floor}, tags::reservoir_floor);
     group(1, {top_down}, tags::foundation_top_downstream);
   }
@@ -183,7 +237,8 @@ void build_and_mesh(const GravityDamSection& s)
 
     const double base_len = s.toe_x - s.heel_x;
     const int distance = field::add("Distance");
-    field::setNumbers(distance, "CurvesList", {double(base)});
+    field::setNumbers(distance, "CurvesList",
+                      std::vector<double>(base.begin(), base.end()));
     field::setNumber(distance, "NumPointsPerCurve",
                      std::max(20.0, std::ceil(4 * base_len / lc)));
 

@@ -39,6 +39,18 @@ struct GravityDamSection
   /// Element size at the far foundation boundaries (0 -> 2.5 x
   /// mesh_size); the size grades from mesh_size at the dam base.
   double foundation_mesh_size = 0;
+  /// The block in two rock regions (tags foundation and foundation_2):
+  /// none; side_by_side (split at the middle of the dam base: foundation
+  /// on the left, foundation_2 on the right); layers (split at
+  /// `split_depth` below the base: foundation above, foundation_2 below).
+  enum class Split
+  {
+    none,
+    side_by_side,
+    layers
+  };
+  Split foundation_split = Split::none;
+  double split_depth = 0; ///< [m] below base_y, for Split::layers
 };
 
 /// @brief Builds the section with gmsh on rank 0, meshes it with linear

@@ -11,6 +11,9 @@ enum Region : int
 {
   dam = 1,
   foundation = 2,
+  /// A second rock region (2D sections with a split foundation block: the
+  /// right half, or the lower layer).
+  foundation_2 = 3,
 };
 
 /// Facet (boundary) tags.
@@ -74,6 +77,8 @@ inline std::string region_name(int tag)
     return "dam";
   case foundation:
     return "foundation";
+  case foundation_2:
+    return "foundation_2";
   default:
     return "region_" + std::to_string(tag);
   }
