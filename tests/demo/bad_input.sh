@@ -74,6 +74,8 @@ expect mesh_size_implausible 'koyna\.toml.*mesh\.size.*0\.001 <= size' --set mes
 expect viscous_spring_without_block 'koyna\.toml.*foundation\.boundary.*foundation\.enabled = true' --set foundation.boundary=viscous_spring
 expect viscous_spring_with_htc 'koyna\.toml.*foundation\.boundary.*HTC' --set foundation.enabled=true --set foundation.boundary=viscous_spring --set material.model=plastic
 expect unknown_boundary 'koyna\.toml.*foundation\.boundary' --set foundation.enabled=true --set foundation.boundary=mtf
+expect split_without_block 'koyna\.toml.*foundation\.split.*foundation\.enabled = true' --set foundation.split=layers
+expect split_below_the_block 'koyna\.toml.*foundation\.split_depth.*foundation\.depth' --set foundation.enabled=true --set foundation.split=layers --set foundation.split_depth=150
 expect rock_density_implausible 'koyna\.toml.*foundation\.rho' --set foundation.enabled=true --set foundation.boundary=viscous_spring --set foundation.rho=0
 
 if [ "$failures" -ne 0 ]; then

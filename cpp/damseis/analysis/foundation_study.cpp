@@ -10,8 +10,9 @@ namespace
 {
 struct Row
 {
-  double ratio = 0.0;
-  nlohmann::json massless, interaction;
+  std::string label; ///< the column's title ("E_f/E_d = 0.5", "case 4")
+  std::string key;   ///< the CSV's first column
+  nlohmann::json massless, interaction; ///< massless: null for extra cases
 };
 
 double value(const nlohmann::json& s, const char* key)
@@ -31,17 +32,18 @@ std::string ratio_name(double r)
   return os.str();
 }
 
-void write_table(const std::vector<Row>& rows, const std::filesystem::path& dir,
-                 const std::string& table)
+void write_csv(const std::vector<Row>& rows, const std::filesystem::path& file)
 {
-  std::ofstream csv(dir / (table + ".csv")), md(dir / (table + ".md"));
-  csv << "ef_over_ed,foundation,max_tension_mpa,max_compression_mpa,"
+  std::ofstream csv(file);
+  csv << "case,foundation,max_tension_mpa,max_compression_mpa,"
          "max_tension_away_mpa,max_compression_away_mpa,crest_cm,f1_hz\n";
   for (const Row& r : rows)
     for (const auto& [name, s] : {std::pair{"viscous_spring", &r.interaction},
                                   std::pair{"massless", &r.massless}})
     {
-      csv << r.ratio << "," << name << ","
+      if (s->is_null())
+        continue;
+      csv << r.key << "," << name << ","
           << value(*s, "max_principal_tension_mpa") << ","
           << value(*s, "max_principal_compression_mpa") << ","
           << away(*s, "max_principal_tension_mpa") << ","
@@ -49,28 +51,42 @@ void write_table(const std::vector<Row>& rows, const std::filesystem::path& dir,
           << 100.0 * std::abs(value(*s, "crest_displacement_max_m")) << ","
           << (*s)["frequencies_hz"][0].get<double>() << "\n";
     }
-  const double radius =
-      rows.front().massless["away_from_singular_points"]["radius_m"];
+}
+
+void write_markdown(const std::vector<Row>& rows,
+                    const std::filesystem::path& file)
+{
+  std::ofstream md(file);
+  const nlohmann::json& first = rows.front().interaction;
+  const double radius = first["away_from_singular_points"]["radius_m"];
   md << "Stress response of the dam (MPa; " +
-            rows.front().massless["stress"].get<std::string>() +
+            first["stress"].get<std::string>() +
             " stresses; compression as a magnitude), as the paper's Table "
             "6. A: dam-foundation interaction (rock with mass, "
             "viscous-spring boundary, vertically incident waves); B: "
             "massless foundation.\n\n| | |";
   for (const Row& r : rows)
-    md << " E_f/E_d = " << r.ratio << " |";
+    md << " " << r.label << " |";
   md << "\n|---|---|";
   for (std::size_t i = 0; i < rows.size(); ++i)
     md << "---|";
   md << "\n" << std::fixed << std::setprecision(2);
-  auto line =
-      [&](const char* group, const char* label, bool interaction, auto get)
+  auto line = [&](const char* group, const std::string& label, bool interaction,
+                  auto get)
   {
     md << "| " << group << " | " << label << " |";
     for (const Row& r : rows)
-      md << " " << get(interaction ? r.interaction : r.massless) << " |";
+    {
+      const nlohmann::json& s = interaction ? r.interaction : r.massless;
+      if (s.is_null())
+        md << " - |";
+      else
+        md << " " << get(s) << " |";
+    }
     md << "\n";
   };
+  std::ostringstream far;
+  far << " > " << radius << " m from corners";
   for (bool a : {true, false})
   {
     const char* g = a ? "A" : "B";
@@ -80,13 +96,10 @@ void write_table(const std::vector<Row>& rows, const std::filesystem::path& dir,
     line(g, "max. comp. stress", a,
          [](const nlohmann::json& s)
          { return -value(s, "max_principal_compression_mpa"); });
-    std::ostringstream t, c;
-    t << "max. ten. > " << radius << " m from corners";
-    c << "max. comp. > " << radius << " m from corners";
-    line(g, t.str().c_str(), a,
+    line(g, "max. ten." + far.str(), a,
          [](const nlohmann::json& s)
          { return away(s, "max_principal_tension_mpa"); });
-    line(g, c.str().c_str(), a,
+    line(g, "max. comp." + far.str(), a,
          [](const nlohmann::json& s)
          { return -away(s, "max_principal_compression_mpa"); });
     line(g, "crest displacement (cm)", a,
@@ -94,16 +107,21 @@ void write_table(const std::vector<Row>& rows, const std::filesystem::path& dir,
          { return 100.0 * std::abs(value(s, "crest_displacement_max_m")); });
   }
   md << "\nThe interaction runs use the Rayleigh damping of the massless "
-        "runs (the same two frequencies). Ratio A/B of the stresses away "
-        "from the corners (tension, compression):";
+        "runs (the same two frequencies; the extra cases that of E_f/E_d = "
+        "1, or the first). Ratio A/B of the stresses away from the corners "
+        "(tension, compression):";
   for (const Row& r : rows)
-    md << " " << r.ratio << ": "
+  {
+    if (r.massless.is_null())
+      continue;
+    md << " " << r.label << ": "
        << away(r.interaction, "max_principal_tension_mpa") /
               away(r.massless, "max_principal_tension_mpa")
        << ", "
        << away(r.interaction, "max_principal_compression_mpa") /
               away(r.massless, "max_principal_compression_mpa")
        << ";";
+  }
   md << "\n";
 }
 } // namespace
@@ -112,28 +130,41 @@ nlohmann::json run_foundation_study(MPI_Comm comm,
                                     const std::vector<double>& ratios,
                                     const std::filesystem::path& out_dir,
                                     const std::string& table,
-                                    const FoundationRun& run)
+                                    const FoundationRun& run,
+                                    const std::vector<ExtraCase>& extra)
 {
   std::vector<Row> rows;
+  std::vector<double> reference_damping;
   for (double ratio : ratios)
   {
-    Row row{ratio, {}, {}};
-    const std::filesystem::path dir = out_dir / ratio_name(ratio);
     const std::string name = ratio_name(ratio).substr(6);
+    Row row{"E_f/E_d = " + name, name, {}, {}};
+    const std::filesystem::path dir = out_dir / ratio_name(ratio);
     results::print(comm, "== E_f / E_d = " + name + ": massless foundation ==");
     row.massless = run(ratio, false, {}, dir / "massless");
     const std::vector<double> damping = {
         row.massless["damping"]["f1_hz"].get<double>(),
         row.massless["damping"]["f2_hz"].get<double>()};
+    if (reference_damping.empty() || ratio == 1.0)
+      reference_damping = damping;
     results::print(comm,
                    "== E_f / E_d = " + name + ": viscous-spring boundary ==");
     row.interaction = run(ratio, true, damping, dir / "viscous_spring");
     rows.push_back(std::move(row));
   }
+  for (const ExtraCase& e : extra)
+  {
+    results::print(comm, "== " + e.label + " ==");
+    rows.push_back({e.label, e.folder, nullptr,
+                    e.run(reference_damping, out_dir / e.folder)});
+  }
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   if (rank == 0)
-    write_table(rows, out_dir, table);
+  {
+    write_csv(rows, out_dir / (table + ".csv"));
+    write_markdown(rows, out_dir / (table + ".md"));
+  }
   return rows.back().interaction;
 }
 
@@ -143,18 +174,54 @@ nlohmann::json run_table6_study(MPI_Comm comm, const GravityDamConfig& cfg,
                                 const GravityDamRun& analyse)
 {
   const double E_d = cfg.concrete_model.params.E;
+  auto seismic = [&](GravityDamConfig c, const std::vector<double>& damping)
+  {
+    c.table6_ratios.clear();
+    c.seismic.stress_total = false; // Table 6: seismic stresses
+    if (!damping.empty())
+      c.seismic.damping_frequencies_hz = damping;
+    return c;
+  };
+  std::vector<ExtraCase> extra;
+  if (cfg.table6_inhomogeneous)
+  {
+    // The paper's cases 4 and 5 (its Fig. 28 is not in the text: assumed
+    // the split under the middle of the base, and the interface at half
+    // the block's depth): E_1 = 0.5 E_d and E_2 = E_d side by side; E_3 =
+    // 0.5 E_d over E_4 = E_d.
+    using Split = geometry::GravityDamSection::Split;
+    for (auto [label, folder, split] :
+         {std::tuple{"case 4: 0.5 E_d beside E_d", "case_4",
+                     Split::side_by_side},
+          std::tuple{"case 5: 0.5 E_d over E_d", "case_5", Split::layers}})
+    {
+      const Split how = split;
+      extra.push_back(
+          {label, folder,
+           [&, how](const std::vector<double>& damping,
+                    const std::filesystem::path& dir)
+           {
+             GravityDamConfig c = cfg;
+             c.section.foundation_split = how;
+             c.section.split_depth = 0.5 * c.section.foundation_depth;
+             c.rock_E2 = E_d;
+             c = seismic(with_foundation(c, 0.5 * E_d, true), damping);
+             return analyse(comm, c, {dir, case_text});
+           }});
+    }
+  }
   return run_foundation_study(
       comm, cfg.table6_ratios, out_dir, "table6",
       [&](double ratio, bool viscous_spring,
           const std::vector<double>& damping_hz,
           const std::filesystem::path& dir)
       {
-        GravityDamConfig c = with_foundation(cfg, ratio * E_d, viscous_spring);
-        c.table6_ratios.clear();
-        c.seismic.stress_total = false; // Table 6: seismic stresses
-        if (!damping_hz.empty())
-          c.seismic.damping_frequencies_hz = damping_hz;
-        return analyse(comm, c, {dir, case_text});
-      });
+        return analyse(
+            comm,
+            seismic(with_foundation(cfg, ratio * E_d, viscous_spring),
+                    damping_hz),
+            {dir, case_text});
+      },
+      extra);
 }
 } // namespace damseis::analysis

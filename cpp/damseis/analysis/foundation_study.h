@@ -18,18 +18,32 @@ using FoundationRun = std::function<nlohmann::json(
     double ratio, bool viscous_spring, const std::vector<double>& damping_hz,
     const std::filesystem::path& dir)>;
 
-/// Runs the cases into out_dir/ratio_<r>/{massless,viscous_spring} and
-/// writes <table>.csv and <table>.md. Each interaction run takes the
-/// Rayleigh damping of its massless run (the same two frequencies), so that
-/// the two differ by the foundation model alone. Returns the last summary.
+/// A case beside the ratios (the paper's inhomogeneous rock): run with
+/// interaction only, with the damping frequencies given, into `dir`.
+struct ExtraCase
+{
+  std::string label, folder;
+  std::function<nlohmann::json(const std::vector<double>& damping_hz,
+                               const std::filesystem::path& dir)>
+      run;
+};
+
+/// Runs the cases into out_dir/ratio_<r>/{massless,viscous_spring} (and
+/// the extra cases into out_dir/<folder>) and writes <table>.csv and
+/// <table>.md. Each interaction run takes the Rayleigh damping of its
+/// massless run (the same two frequencies), so that the two differ by the
+/// foundation model alone; the extra cases that of E_f/E_d = 1 (or the
+/// first ratio). Returns the last summary.
 nlohmann::json run_foundation_study(MPI_Comm comm,
                                     const std::vector<double>& ratios,
                                     const std::filesystem::path& out_dir,
                                     const std::string& table,
-                                    const FoundationRun& run);
+                                    const FoundationRun& run,
+                                    const std::vector<ExtraCase>& extra = {});
 
 /// The gravity-dam section's study (study.table6): seismic stresses, into
-/// table6.csv and table6.md.
+/// table6.csv and table6.md; with study.table6_inhomogeneous the paper's
+/// cases 4 and 5 too.
 nlohmann::json run_table6_study(MPI_Comm comm, const GravityDamConfig& cfg,
                                 const std::filesystem::path& out_dir,
                                 const std::string& case_text,

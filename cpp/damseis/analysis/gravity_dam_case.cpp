@@ -199,6 +199,9 @@ GravityDamConfig read_gravity_dam_config(const input::Case& c)
   s.split_depth = c.real("foundation.split_depth");
   if (s.split_depth == 0.0)
     s.split_depth = 0.5 * s.foundation_depth;
+  if (s.foundation_split != Split::none && !s.foundation)
+    c.fail("foundation.split", "needs a foundation block",
+           "foundation.enabled = true");
   if (s.foundation_split == Split::layers &&
       !(s.split_depth < s.foundation_depth))
     c.fail("foundation.split_depth", "is not above the block's bottom",
