@@ -12,7 +12,8 @@
 #    every output is finite, the joints open (by more than 1 mm; measured
 #    1.5 cm at 0.5 g after 2 s) and the energy balance shows no energy
 #    created (error <= 0 within 1e-6 of the load work: HHT removes energy,
-#    never adds it; measured -3e-5 of it).
+#    never adds it), and HHT removes little of it (error >= -1e-3 of the
+#    load work; measured -3e-5).
 # Usage: arch_foundation_checks.sh ARCH_DAM PYTHON
 set -eu
 exe=$1 python=$2
@@ -52,7 +53,7 @@ print(f"contact joints: largest opening {opening:.2f} cm, energy balance "
       f"error {e['balance_error_j']:.3e} J of {e['load_work_j']:.3e} J load "
       f"work, joint work {e['joint_work_j']:.3e} J")
 assert opening > 0.1, opening
-assert e["balance_error_j"] <= 1e-6 * abs(e["load_work_j"])
+assert -1e-3 * abs(e["load_work_j"]) <= e["balance_error_j"] <= 1e-6 * abs(e["load_work_j"])
 for k, v in e.items():
     if k != "note":
         assert math.isfinite(v), (k, v)

@@ -49,7 +49,8 @@ input::Schema arch_dam_schema()
       .between(0, 10);
   s.real("foundation.spring_tangential", "0.6666666666666666", "-",
          "viscous-spring boundary: tangential spring alpha_t G / R (2/3)")
-      .between(0, 10);
+      .above(0)
+      .at_most(10);
   s.string("joints.model", "bonded", "-",
            "contraction joints in a linear analysis: bonded (tied pairs) or "
            "contact (Coulomb friction, no tension)",

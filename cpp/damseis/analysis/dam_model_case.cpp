@@ -346,12 +346,12 @@ input::Schema dam_model_schema()
                  "springs and dashpots on it, the ground motion as the "
                  "outcrop motion of vertically incident waves");
   s.real("foundation.spring_normal", "-1", "-",
-         "viscous-spring boundary: normal spring alpha_n G / R (-1: 1 in "
-         "2D, 4/3 in 3D)")
+         "viscous-spring boundary: normal spring alpha_n G / R (> 0; -1: "
+         "1 in 2D, 4/3 in 3D)")
       .between(-1, 10);
   s.real("foundation.spring_tangential", "-1", "-",
-         "viscous-spring boundary: tangential spring alpha_t G / R (-1: "
-         "1/2 in 2D, 2/3 in 3D)")
+         "viscous-spring boundary: tangential spring alpha_t G / R (> 0; "
+         "-1: 1/2 in 2D, 2/3 in 3D)")
       .between(-1, 10);
   s.real_array("foundation.centre", "[]", "m",
                "viscous-spring boundary: the point R is measured from ([]: "

@@ -36,7 +36,8 @@ void write_csv(const std::vector<Row>& rows, const std::filesystem::path& file)
 {
   std::ofstream csv(file);
   csv << "case,foundation,max_tension_mpa,max_compression_mpa,"
-         "max_tension_away_mpa,max_compression_away_mpa,crest_cm,f1_hz\n";
+         "max_tension_away_mpa,max_compression_away_mpa,crest_cm,"
+         "system_f1_hz\n";
   for (const Row& r : rows)
     for (const auto& [name, s] : {std::pair{"viscous_spring", &r.interaction},
                                   std::pair{"massless", &r.massless}})
@@ -61,10 +62,9 @@ void write_markdown(const std::vector<Row>& rows,
   const double radius = first["away_from_singular_points"]["radius_m"];
   md << "Stress response of the dam (MPa; " +
             first["stress"].get<std::string>() +
-            " stresses; compression as a magnitude), as the paper's Table "
-            "6. A: dam-foundation interaction (rock with mass, "
-            "viscous-spring boundary, vertically incident waves); B: "
-            "massless foundation.\n\n| | |";
+            " stresses; compression as a magnitude). A: dam-foundation "
+            "interaction (rock with mass, viscous-spring boundary, "
+            "vertically incident waves); B: massless foundation.\n\n| | |";
   for (const Row& r : rows)
     md << " " << r.label << " |";
   md << "\n|---|---|";

@@ -4,6 +4,7 @@
 #include <damseis/linalg/petsc_vectors.h>
 #include <dolfinx/common/IndexMap.h>
 #include <dolfinx/fem/DofMap.h>
+#include <stdexcept>
 
 namespace damseis::analysis
 {
@@ -43,10 +44,14 @@ FreeFieldLoad::FreeFieldLoad(const fem::ElasticModel& fe,
     for (PetscInt row = lo; row < hi; ++row)
     {
       PetscInt n = 0;
-      MatGetRow(_pick.mat(), row, &n, nullptr, nullptr);
-      if (n > 1)
+      const PetscScalar* values = nullptr;
+      MatGetRow(_pick.mat(), row, &n, nullptr, &values);
+      int nonzero = 0;
+      for (PetscInt j = 0; j < n; ++j)
+        nonzero += values[j] != 0.0;
+      if (nonzero > 1)
         shared.push_back(row);
-      MatRestoreRow(_pick.mat(), row, &n, nullptr, nullptr);
+      MatRestoreRow(_pick.mat(), row, &n, nullptr, &values);
     }
     MatZeroRows(_pick.mat(), static_cast<PetscInt>(shared.size()),
                 shared.data(), 0.0, nullptr, nullptr);
@@ -54,6 +59,11 @@ FreeFieldLoad::FreeFieldLoad(const fem::ElasticModel& fe,
     _count = linalg::column_vector(K);
     VecSet(_v_all.vec(), 1.0);
     MatMultTranspose(_pick.mat(), _v_all.vec(), _count.vec());
+    PetscReal least = 0.0;
+    VecMin(_count.vec(), nullptr, &least);
+    if (!(least > 0.0))
+      throw std::logic_error("free-field load: a reduced unknown takes its "
+                             "value from no dof alone");
   }
   const auto& map = *fe.V()->dofmap()->index_map;
   const std::int32_t n = map.size_local();

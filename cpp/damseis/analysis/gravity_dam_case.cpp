@@ -72,10 +72,12 @@ input::Schema gravity_dam_schema()
   s.real("foundation.spring_normal", "1.0", "-",
          "viscous-spring boundary: normal spring alpha_n G / R (R from the "
          "middle of the dam base)")
-      .between(0, 10);
+      .above(0)
+      .at_most(10);
   s.real("foundation.spring_tangential", "0.5", "-",
          "viscous-spring boundary: tangential spring alpha_t G / R")
-      .between(0, 10);
+      .above(0)
+      .at_most(10);
   s.real("foundation.width", "300.0", "m",
          "width of the foundation block, centred on the dam base")
       .above(0)
@@ -152,6 +154,47 @@ input::Schema gravity_dam_schema()
   return s;
 }
 
+namespace
+{
+/// The foundation block's keys: size, mesh, rock, split (the boundary
+/// and the study are read with the seismic keys).
+void read_foundation_block(const input::Case& c, GravityDamConfig& g)
+{
+  auto& s = g.section;
+  s.foundation = c.boolean("foundation.enabled");
+  s.foundation_width = c.real("foundation.width");
+  s.foundation_depth = c.real("foundation.depth");
+  s.foundation_mesh_size = c.real("foundation.mesh_size");
+  using Split = geometry::GravityDamSection::Split;
+  const std::string split = c.string("foundation.split");
+  s.foundation_split = split == "side_by_side" ? Split::side_by_side
+                       : split == "layers"     ? Split::layers
+                                               : Split::none;
+  s.split_depth = c.real("foundation.split_depth");
+  if (s.split_depth == 0.0)
+    s.split_depth = 0.5 * s.foundation_depth;
+  if (s.foundation_split != Split::none && !s.foundation)
+    c.fail("foundation.split", "needs a foundation block",
+           "foundation.enabled = true");
+  if (s.foundation_split == Split::layers &&
+      !(s.split_depth < s.foundation_depth))
+    c.fail("foundation.split_depth", "is not above the block's bottom",
+           "a depth below the base smaller than foundation.depth");
+  g.rock_E2 = c.real("foundation.E2");
+  g.rock = {c.real("foundation.E"), c.real("foundation.nu"), 0.0};
+  if (s.foundation && !(s.foundation_width > s.toe_x - s.heel_x))
+  {
+    c.fail("foundation.width", "is narrower than the dam base",
+           "a width larger than toe_x - heel_x");
+  }
+  if (s.foundation_mesh_size > 0.0 &&
+      s.foundation_mesh_size < 0.1 * s.mesh_size)
+    c.fail("foundation.mesh_size", "is finer than a tenth of mesh.size",
+           "0 (2.5 x mesh.size) or a size at least mesh.size / 10");
+}
+
+} // namespace
+
 GravityDamConfig read_gravity_dam_config(const input::Case& c)
 {
   GravityDamConfig g;
@@ -187,36 +230,7 @@ GravityDamConfig read_gravity_dam_config(const input::Case& c)
                 ? fem::PlaneMode::plane_strain
                 : fem::PlaneMode::plane_stress;
   g.write_mesh_file = c.boolean("output.mesh_file");
-  s.foundation = c.boolean("foundation.enabled");
-  s.foundation_width = c.real("foundation.width");
-  s.foundation_depth = c.real("foundation.depth");
-  s.foundation_mesh_size = c.real("foundation.mesh_size");
-  using Split = geometry::GravityDamSection::Split;
-  const std::string split = c.string("foundation.split");
-  s.foundation_split = split == "side_by_side" ? Split::side_by_side
-                       : split == "layers"     ? Split::layers
-                                               : Split::none;
-  s.split_depth = c.real("foundation.split_depth");
-  if (s.split_depth == 0.0)
-    s.split_depth = 0.5 * s.foundation_depth;
-  if (s.foundation_split != Split::none && !s.foundation)
-    c.fail("foundation.split", "needs a foundation block",
-           "foundation.enabled = true");
-  if (s.foundation_split == Split::layers &&
-      !(s.split_depth < s.foundation_depth))
-    c.fail("foundation.split_depth", "is not above the block's bottom",
-           "a depth below the base smaller than foundation.depth");
-  g.rock_E2 = c.real("foundation.E2");
-  g.rock = {c.real("foundation.E"), c.real("foundation.nu"), 0.0};
-  if (s.foundation && !(s.foundation_width > s.toe_x - s.heel_x))
-  {
-    c.fail("foundation.width", "is narrower than the dam base",
-           "a width larger than toe_x - heel_x");
-  }
-  if (s.foundation_mesh_size > 0.0 &&
-      s.foundation_mesh_size < 0.1 * s.mesh_size)
-    c.fail("foundation.mesh_size", "is finer than a tenth of mesh.size",
-           "0 (2.5 x mesh.size) or a size at least mesh.size / 10");
+  read_foundation_block(c, g);
   geometry::check_cell_estimate(c, geometry::estimated_cells(s));
   const bool viscous_spring =
       c.string("foundation.boundary") == "viscous_spring";

@@ -169,6 +169,13 @@ void LinearSeismicAnalysis::set_up_wave_foundation(Mat K)
     throw std::invalid_argument(
         "a foundation with a viscous-spring boundary does not yet take "
         "an initial velocity");
+  if (_s.damping_frequencies_hz.empty() && _s.damping_ratio > 0.0)
+    results::warn(_comm,
+                  "rock with mass on a viscous-spring boundary: the lowest "
+                  "modes may be the rock block's on its springs, and "
+                  "damping.modes fits the Rayleigh damping to them; give "
+                  "damping.frequencies_hz (e.g. the massless model's) to "
+                  "fit it to the dam's");
   _boundary = std::make_unique<fem::ViscousBoundary>(
       _fe, *_fe.model().facet_tags, _wave->boundary_tags, _wave->centre,
       _wave->factors);
@@ -315,8 +322,9 @@ void LinearSeismicAnalysis::static_stage()
 void LinearSeismicAnalysis::time_history()
 {
   // Displacement relative to the base under the ground acceleration,
-  // M a + C v + K u = -M sum_c r_c a_gc(t). The added mass multiplies the
-  // total acceleration, so it is part of M here.
+  // M a + C v + K u = -M sum_c r_c a_gc(t) (the added mass multiplies the
+  // total acceleration, so it is part of M here); with a wave foundation
+  // the absolute displacement under the free field's loads.
   // With contact the state is total: the static solution is the initial
   // displacement and the static load is sustained.
   if (_contact)
@@ -641,7 +649,8 @@ nlohmann::json wave_foundation_summary(const WaveFoundation& wave,
   for (int i = 0; i < 3; ++i)
     corrected.push_back(f.baseline_corrected(i));
   return {{"model", "mass, viscous-spring boundary, " + f.description()},
-          {"boundary_measure_m", boundary_measure},
+          {"boundary_measure", boundary_measure},
+          {"boundary_measure_unit", "m2 in 3D, m in 2D (per unit thickness)"},
           {"spring_factors", {wave.factors.normal, wave.factors.tangential}},
           {"scattering_centre_m", wave.centre},
           {"rock",

@@ -71,7 +71,8 @@ struct ContactJoints
 /// motion is the outcrop motion of vertically incident waves: the state is
 /// absolute (the displacements include the ground's) and the load is the
 /// free field's (analysis/free_field_load); the Rayleigh damping acts on
-/// the motion relative to the free field. Not yet with contact.
+/// the motion relative to the free field; bonded and contact joints run on
+/// it.
 std::unique_ptr<SeismicAnalysis>
 linear_seismic_analysis(fem::ElasticModel& fe, const SeismicSettings& settings,
                         const ModelLoads& loads, const RunFolder& folder,

@@ -115,6 +115,15 @@ incident_from_outcrop(const Rock& rock, int dim, double depth,
                       const std::array<std::vector<double>, 3>& outcrop,
                       double dt, std::array<bool, 3>& corrected)
 {
+  return incident_from_outcrop(dim, depth / rock.cs(), depth / rock.cp(),
+                               outcrop, dt, corrected);
+}
+
+std::array<SampledMotion, 3>
+incident_from_outcrop(int dim, double s_time, double p_time,
+                      const std::array<std::vector<double>, 3>& outcrop,
+                      double dt, std::array<bool, 3>& corrected)
+{
   std::array<SampledMotion, 3> incident;
   corrected = {};
   for (int i = 0; i < dim; ++i)
@@ -129,8 +138,8 @@ incident_from_outcrop(const Rock& rock, int dim, double depth,
     }
     for (double& x : a)
       x *= 0.5;
-    const double c = i == dim - 1 ? rock.cp() : rock.cs();
-    const double delay = depth * (1.0 / rock.cs() - 1.0 / c);
+    // Every component reaches the surface one S travel time late.
+    const double delay = i == dim - 1 ? s_time - p_time : 0.0;
     incident[i] = SampledMotion(std::move(a), dt, delay);
   }
   return incident;

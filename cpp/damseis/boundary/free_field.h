@@ -88,10 +88,17 @@ public:
 /// The incident wave at the base of a column of `rock` and depth
 /// z_surface - z_base whose free surface moves with the outcrop record
 /// (see the file's comment): half of it, baseline corrected if it does
-/// not end at rest, each component delayed so that all arrive at the
-/// surface together. `corrected[i]`: whether component i was corrected.
+/// not end at rest, the vertical (P) component delayed so that all
+/// arrive at the surface together. `corrected[i]`: whether component i
+/// was corrected.
 std::array<SampledMotion, 3>
 incident_from_outcrop(const Rock& rock, int dim, double depth,
+                      const std::array<std::vector<double>, 3>& outcrop,
+                      double dt, std::array<bool, 3>& corrected);
+/// The same with the travel times from the base to the surface of the S
+/// and the P waves given (layers: the sums of h / c over them).
+std::array<SampledMotion, 3>
+incident_from_outcrop(int dim, double s_time, double p_time,
                       const std::array<std::vector<double>, 3>& outcrop,
                       double dt, std::array<bool, 3>& corrected);
 

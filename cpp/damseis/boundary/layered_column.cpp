@@ -39,6 +39,13 @@ LayeredColumn::LayeredColumn(double z_base, const std::vector<Layer>& layers,
   }
   // Sub-steps: a step no longer than a wave's crossing of an element.
   _m = std::max(1, static_cast<int>(std::ceil(dt * c_max / h_min)));
+  const double stored = 3.0 * dim * _z.size() * (steps + 1.0);
+  if (stored > 2e8 || double(_m) * steps * _z.size() > 1e11)
+    throw std::invalid_argument(
+        "layered column: " + std::to_string(_z.size()) + " nodes, " +
+        std::to_string(_m) +
+        " sub-steps per step: too large; the layers' "
+        "rock is too soft or too varied for the record's time step");
   const Rock& bottom_rock = layers.front().rock;
   for (int c = 0; c < dim; ++c)
   {
@@ -65,9 +72,15 @@ LayeredColumn LayeredColumn::from_outcrop(
   if (layers.empty())
     throw std::invalid_argument("layered column: no layers");
   std::array<bool, 3> corrected{};
-  const double depth = layers.back().top - z_base;
-  const std::array<SampledMotion, 3> incident = incident_from_outcrop(
-      layers.front().rock, dim, depth, outcrop, dt, corrected);
+  double s_time = 0.0, p_time = 0.0, bottom = z_base;
+  for (const Layer& l : layers)
+  {
+    s_time += (l.top - bottom) / l.rock.cs();
+    p_time += (l.top - bottom) / l.rock.cp();
+    bottom = l.top;
+  }
+  const std::array<SampledMotion, 3> incident =
+      incident_from_outcrop(dim, s_time, p_time, outcrop, dt, corrected);
   double cs_min = HUGE_VAL;
   for (const Layer& l : layers)
     cs_min = std::min(cs_min, l.rock.cs());

@@ -35,10 +35,10 @@ public:
                 const std::array<SampledMotion, 3>& incident, double dt,
                 int steps, double h_max);
 
-  /// The column whose incident wave is that of the outcrop record of its
-  /// lowest rock (incident_from_outcrop; the surface moves later by the
-  /// layers' S travel time), elements of at most 1/20 of the shortest S
-  /// wavelength at 25 Hz.
+  /// The column whose incident wave is half the outcrop record
+  /// (incident_from_outcrop with the layers' S and P travel times: every
+  /// component reaches the surface the layers' S travel time late),
+  /// elements of at most 1/20 of the shortest S wavelength at 25 Hz.
   static LayeredColumn
   from_outcrop(double z_base, const std::vector<Layer>& layers, int dim,
                const std::array<std::vector<double>, 3>& outcrop, double dt,

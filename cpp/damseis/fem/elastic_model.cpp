@@ -325,18 +325,6 @@ Vec ElasticModel::influence(int component) const
   return r;
 }
 
-std::shared_ptr<const dfem::Function<double>>
-ElasticModel::coefficient(const std::string& name) const
-{
-  if (name == "mu")
-    return _mu;
-  if (name == "lmbda")
-    return _lmbda;
-  if (name == "rho")
-    return _rho;
-  throw std::invalid_argument("no material coefficient " + name);
-}
-
 Mat ElasticModel::assemble_facet_matrix(
     const ufcx_form& form,
     const std::map<std::string, std::vector<double>>& values,

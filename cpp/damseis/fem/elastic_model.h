@@ -135,9 +135,6 @@ public:
   /// elsewhere.
   Vec influence(int component) const;
 
-  /// The cell-wise (DG0) material coefficient "mu", "lmbda" (lambda* in
-  /// plane stress) or "rho".
-  std::shared_ptr<const Function> coefficient(const std::string& name) const;
   /// The bilinear form `form` on V x V with the material coefficients and
   /// the scalar or vector constants by name, its exterior-facet integrals
   /// over subdomain 1 of `facets`, assembled with the fixed dofs' rows and

@@ -89,6 +89,71 @@ void validate(const GravityDamSection& s)
   }
 }
 
+/// The foundation block's curves and surfaces (built-in kernel).
+struct FoundationBlock
+{
+  std::vector<int> foundation, foundation_2, bottom, left, right;
+  int floor = -1, top_down = -1;
+};
+
+/// The block below the dam, sharing the base curves (`base`: heel to toe,
+/// in two at `base_mid` when split side by side); in two regions if split.
+FoundationBlock build_foundation_block(const GravityDamSection& s,
+                                       const std::vector<int>& base, int heel,
+                                       int toe, int base_mid, double lc_far)
+{
+  namespace geo = gmsh::model::geo;
+  using Split = GravityDamSection::Split;
+  FoundationBlock b;
+  const double xc = 0.5 * (s.heel_x + s.toe_x);
+  const double xl = xc - 0.5 * s.foundation_width;
+  const double xr = xc + 0.5 * s.foundation_width;
+  const double yb = s.base_y - s.foundation_depth;
+  const int bl = geo::addPoint(xl, yb, 0, lc_far);
+  const int br = geo::addPoint(xr, yb, 0, lc_far);
+  const int tr = geo::addPoint(xr, s.base_y, 0, lc_far);
+  const int tl = geo::addPoint(xl, s.base_y, 0, lc_far);
+  b.top_down = geo::addLine(tr, toe);
+  b.floor = geo::addLine(heel, tl);
+  auto surface = [](const std::vector<int>& loop)
+  { return geo::addPlaneSurface({geo::addCurveLoop(loop, -1, false)}); };
+  if (s.foundation_split == Split::side_by_side)
+  {
+    const int mb = geo::addPoint(xc, yb, 0, lc_far);
+    b.bottom = {geo::addLine(bl, mb), geo::addLine(mb, br)};
+    const int split = geo::addLine(mb, base_mid);
+    b.right = {geo::addLine(br, tr)};
+    b.left = {geo::addLine(tl, bl)};
+    b.foundation = {
+        surface({b.bottom[0], split, -base[0], b.floor, b.left[0]})};
+    b.foundation_2 = {
+        surface({b.bottom[1], b.right[0], b.top_down, -base[1], -split})};
+  }
+  else if (s.foundation_split == Split::layers)
+  {
+    const double ys = s.base_y - s.split_depth;
+    const int ml = geo::addPoint(xl, ys, 0, lc_far);
+    const int mr = geo::addPoint(xr, ys, 0, lc_far);
+    b.bottom = {geo::addLine(bl, br)};
+    const int interface = geo::addLine(ml, mr);
+    b.right = {geo::addLine(br, mr), geo::addLine(mr, tr)};
+    b.left = {geo::addLine(tl, ml), geo::addLine(ml, bl)};
+    b.foundation = {surface(
+        {interface, b.right[1], b.top_down, -base[0], b.floor, b.left[0]})};
+    b.foundation_2 = {
+        surface({b.bottom[0], b.right[0], -interface, b.left[1]})};
+  }
+  else
+  {
+    b.bottom = {geo::addLine(bl, br)};
+    b.right = {geo::addLine(br, tr)};
+    b.left = {geo::addLine(tl, bl)};
+    b.foundation = {surface(
+        {b.bottom[0], b.right[0], b.top_down, -base[0], b.floor, b.left[0]})};
+  }
+  return b;
+}
+
 /// Builds the geometry (built-in kernel, shared curves), the physical
 /// groups and the size fields, and meshes with linear triangles.
 void build_and_mesh(const GravityDamSection& s)
@@ -136,59 +201,13 @@ void build_and_mesh(const GravityDamSection& s)
   const int dam =
       geo::addPlaneSurface({geo::addCurveLoop(dam_loop, -1, false)});
 
-  // Foundation block below the dam, sharing the base curve; in two regions
-  // if split.
-  std::vector<int> foundation, foundation_2, bottom, left, right;
-  int floor = -1, top_down = -1;
+  // Foundation block below the dam, sharing the base curve.
+  FoundationBlock block;
   double lc_far = lc;
   if (s.foundation)
   {
     lc_far = s.foundation_mesh_size > 0 ? s.foundation_mesh_size : 2.5 * lc;
-    const double xl = xc - 0.5 * s.foundation_width;
-    const double xr = xc + 0.5 * s.foundation_width;
-    const double yb = s.base_y - s.foundation_depth;
-    const int bl = geo::addPoint(xl, yb, 0, lc_far);
-    const int br = geo::addPoint(xr, yb, 0, lc_far);
-    const int tr = geo::addPoint(xr, s.base_y, 0, lc_far);
-    const int tl = geo::addPoint(xl, s.base_y, 0, lc_far);
-    top_down = geo::addLine(tr, toe);
-    floor = geo::addLine(heel, tl);
-    if (side_by_side)
-    {
-      const int mb = geo::addPoint(xc, yb, 0, lc_far);
-      bottom = {geo::addLine(bl, mb), geo::addLine(mb, br)};
-      const int split = geo::addLine(mb, base_mid);
-      right = {geo::addLine(br, tr)};
-      left = {geo::addLine(tl, bl)};
-      foundation = {geo::addPlaneSurface({geo::addCurveLoop(
-          {bottom[0], split, -base[0], floor, left[0]}, -1, false)})};
-      foundation_2 = {geo::addPlaneSurface({geo::addCurveLoop(
-          {bottom[1], right[0], top_down, -base[1], -split}, -1, false)})};
-    }
-    else if (s.foundation_split == Split::layers)
-    {
-      const double ys = s.base_y - s.split_depth;
-      const int ml = geo::addPoint(xl, ys, 0, lc_far);
-      const int mr = geo::addPoint(xr, ys, 0, lc_far);
-      bottom = {geo::addLine(bl, br)};
-      const int interface = geo::addLine(ml, mr);
-      right = {geo::addLine(br, mr), geo::addLine(mr, tr)};
-      left = {geo::addLine(tl, ml), geo::addLine(ml, bl)};
-      foundation = {geo::addPlaneSurface({geo::addCurveLoop(
-          {interface, right[1], top_down, -base[0], floor, left[0]}, -1,
-          false)})};
-      foundation_2 = {geo::addPlaneSurface({geo::addCurveLoop(
-          {bottom[0], right[0], -interface, left[1]}, -1, false)})};
-    }
-    else
-    {
-      bottom = {geo::addLine(bl, br)};
-      right = {geo::addLine(br, tr)};
-      left = {geo::addLine(tl, bl)};
-      foundation = {geo::addPlaneSurface({geo::addCurveLoop(
-          {bottom[0], right[0], top_down, -base[0], floor, left[0]}, -1,
-          false)})};
-    }
+    block = build_foundation_block(s, base, heel, toe, base_mid, lc_far);
   }
   geo::synchronize();
 
@@ -206,15 +225,15 @@ void build_and_mesh(const GravityDamSection& s)
   group(1, base, tags::dam_base);
   if (s.foundation)
   {
-    group(2, foundation, tags::foundation);
-    if (!foundation_2.empty())
-      group(2, foundation_2, tags::foundation_2);
-    group(1, bottom, tags::foundation_bottom);
-    std::vector<int> sides = left;
-    sides.insert(sides.end(), right.begin(), right.end());
+    group(2, block.foundation, tags::foundation);
+    if (!block.foundation_2.empty())
+      group(2, block.foundation_2, tags::foundation_2);
+    group(1, block.bottom, tags::foundation_bottom);
+    std::vector<int> sides = block.left;
+    sides.insert(sides.end(), block.right.begin(), block.right.end());
     group(1, sides, tags::foundation_sides);
-    group(1, {floor}, tags::reservoir_floor);
-    group(1, {top_down}, tags::foundation_top_downstream);
+    group(1, {block.floor}, tags::reservoir_floor);
+    group(1, {block.top_down}, tags::foundation_top_downstream);
   }
 
   gmsh::option::setNumber("Mesh.Algorithm", 6);

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <damseis/linalg/all_gather.h>
+#include <dolfinx/common/IndexMap.h>
 #include <dolfinx/mesh/Mesh.h>
 #include <dolfinx/mesh/MeshTags.h>
 #include <dolfinx/mesh/utils.h>
@@ -40,8 +41,11 @@ std::vector<std::int32_t> surface_facets(const Model& model,
   std::vector<std::int8_t> is_exterior(f_to_c->num_nodes(), 0);
   for (std::int32_t f : exterior)
     is_exterior[f] = 1;
+  // Owned facets only, so that the gathered surface does not depend on
+  // the partition.
+  const std::int32_t owned = topology.index_map(tdim - 1)->size_local();
   std::vector<std::int32_t> facets;
-  for (std::int32_t f = 0; f < f_to_c->num_nodes(); ++f)
+  for (std::int32_t f = 0; f < owned; ++f)
   {
     auto cells = f_to_c->links(f);
     int rock = 0, dams = 0;
@@ -181,7 +185,7 @@ double GroundSurface::height(const std::array<double, 3>& p) const
     double d = 0.0;
     for (int k = 0; k < _dim - 1; ++k)
       d += (_x[3 * i + k] - p[k]) * (_x[3 * i + k] - p[k]);
-    if (d < d_min)
+    if (d < d_min || (d == d_min && _x[3 * i + z] > best))
     {
       d_min = d;
       best = _x[3 * i + z];
