@@ -170,23 +170,28 @@ std::string SideBySideFreeField::description() const
          _left->description() + " | " + _right->description();
 }
 
+VerticalFreeField::Arrivals VerticalFreeField::arrivals(double z, double zs,
+                                                        double t, int i) const
+{
+  zs = std::max(zs, _zb);
+  const double zc = std::min(z, zs); // above the surface: the surface's
+  const double c = speed(i);
+  return {t - (zc - _zb) / c, t - (2.0 * zs - zc - _zb) / c};
+}
+
 FreeFieldState VerticalFreeField::at(double z, double zs, double t) const
 {
   FreeFieldState s;
-  zs = std::max(zs, _zb);
-  const double zc = std::min(z, zs);
   for (int i = 0; i < _dim; ++i)
   {
     const SampledMotion& w = _incident[i];
     if (w.empty())
       continue;
-    const double c = speed(i);
-    const double t_up = t - (zc - _zb) / c;
-    const double t_dn = t - (2.0 * zs - zc - _zb) / c;
+    const auto [t_up, t_dn] = arrivals(z, zs, t, i);
     s.u[i] = w.displacement(t_up) + w.displacement(t_dn);
     const double v_up = w.velocity(t_up), v_dn = w.velocity(t_dn);
     s.v[i] = v_up + v_dn;
-    s.s[i] = _rock.rho * c * (v_dn - v_up);
+    s.s[i] = _rock.rho * speed(i) * (v_dn - v_up);
   }
   return s;
 }
@@ -195,16 +200,13 @@ std::array<double, 3> VerticalFreeField::velocity(double z, double zs,
                                                   double t) const
 {
   std::array<double, 3> v{};
-  zs = std::max(zs, _zb);
-  const double zc = std::min(z, zs);
   for (int i = 0; i < _dim; ++i)
   {
     const SampledMotion& w = _incident[i];
     if (w.empty())
       continue;
-    const double c = speed(i);
-    v[i] = w.velocity(t - (zc - _zb) / c) +
-           w.velocity(t - (2.0 * zs - zc - _zb) / c);
+    const auto [t_up, t_dn] = arrivals(z, zs, t, i);
+    v[i] = w.velocity(t_up) + w.velocity(t_dn);
   }
   return v;
 }

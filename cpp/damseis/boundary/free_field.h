@@ -150,6 +150,15 @@ public:
   double z_surface() const { return _zs; }
 
 private:
+  /// The times the up-going and the down-going wave of component i seen
+  /// at height z (in a column with its surface at z_s) at time t left the
+  /// base: t - tau_up, t - tau_dn.
+  struct Arrivals
+  {
+    double up, down;
+  };
+  Arrivals arrivals(double z, double z_s, double t, int i) const;
+
   Rock _rock;
   int _dim;
   double _zb, _zs;
