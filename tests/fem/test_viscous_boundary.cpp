@@ -115,9 +115,9 @@ ColumnResult run_column(int c, double T, bool layered = false)
 
   PMat K = own(fe.assemble_stiffness());
   PMat M = own(fe.assemble_mass(nullptr));
-  PMat Kb = own(b.springs());
+  PMat Kb(b.springs(), true); // shared with the boundary
   MatAXPY(K.mat(), 1.0, Kb.mat(), SUBSET_NONZERO_PATTERN);
-  PMat Cb = own(b.dashpots());
+  PMat Cb(b.dashpots(), true);
   const dynamics::RayleighDamping rayleigh{2.0, 2e-4};
   const double delay_s = H / rock.cs();
   const double duration = delay_s + T + 2 * H / rock.cs() + 0.05;

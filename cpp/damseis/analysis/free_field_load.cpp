@@ -20,9 +20,9 @@ FreeFieldLoad::FreeFieldLoad(const fem::ElasticModel& fe,
     : _field(std::move(field)), _M(M), _K(K), _tie(tie), _damping(damping),
       _dt(dt), _dim(fe.dim())
 {
-  _Kb = Matrix(b.springs(), false);
-  _Cb = Matrix(b.dashpots(), false);
-  _T = Matrix(b.traction_operator(), false);
+  _Kb = Matrix(b.springs(), true);
+  _Cb = Matrix(b.dashpots(), true);
+  _T = Matrix(b.traction_operator(), true);
   if (sustained)
   {
     _sustained = linalg::column_vector(K);

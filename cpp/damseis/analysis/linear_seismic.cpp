@@ -181,8 +181,8 @@ void LinearSeismicAnalysis::set_up_wave_foundation(Mat K)
       _wave->factors);
   _ground = std::make_unique<geometry::GroundSurface>(
       _fe.model(), _s.dam_regions, _wave->boundary_tags);
-  Matrix springs(_boundary->springs(), false);
-  _dashpots = Matrix(_boundary->dashpots(), false);
+  Matrix springs(_boundary->springs(), true);
+  _dashpots = Matrix(_boundary->dashpots(), true);
   if (_tie) // on the tied unknowns
   {
     springs = Matrix(fem::reduce_to_tied(springs.mat(), _tie), false);

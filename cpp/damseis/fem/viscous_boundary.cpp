@@ -45,7 +45,6 @@ ViscousBoundary::ViscousBoundary(
     const ElasticModel& fe, const dolfinx::mesh::MeshTags<std::int32_t>& tags,
     const std::vector<int>& boundary_tags, const std::array<double, 3>& centre,
     boundary::SpringFactors factors)
-    : _fe(fe), _centre(centre), _factors(factors)
 {
   std::vector<std::int32_t> facets;
   for (std::size_t i = 0; i < tags.indices().size(); ++i)
@@ -54,10 +53,7 @@ ViscousBoundary::ViscousBoundary(
       facets.push_back(tags.indices()[i]);
   std::sort(facets.begin(), facets.end());
   facets.erase(std::unique(facets.begin(), facets.end()), facets.end());
-  std::vector<std::int32_t> ones(facets.size(), 1);
   const int tdim = fe.mesh()->topology().dim();
-  _marked = std::make_shared<dolfinx::mesh::MeshTags<std::int32_t>>(
-      fe.mesh(), tdim - 1, facets, std::move(ones));
   // The nodes on those facets (owned and ghost).
   _blocks =
       dolfinx::fem::locate_dofs_topological(*fe.V(), tdim - 1, facets, true);
@@ -71,31 +67,26 @@ ViscousBoundary::ViscousBoundary(
     throw std::invalid_argument(
         "the transmitting boundary has no facets: the mesh has no facets "
         "with the boundary's tags");
-}
 
-Mat ViscousBoundary::assemble(const ufcx_form& form) const
-{
-  const int dim = _fe.dim();
-  return _fe.assemble_facet_matrix(
-      form,
-      {{"centre", std::vector<double>(_centre.begin(), _centre.begin() + dim)},
-       {"alpha_n", {_factors.normal}},
-       {"alpha_t", {_factors.tangential}}},
-      *_marked);
-}
-
-Mat ViscousBoundary::springs() const
-{
-  return assemble(boundary_form(_fe.dim(), _fe.degree(), Part::spring));
-}
-
-Mat ViscousBoundary::dashpots() const
-{
-  return assemble(boundary_form(_fe.dim(), _fe.degree(), Part::dashpot));
-}
-
-Mat ViscousBoundary::traction_operator() const
-{
-  return assemble(boundary_form(_fe.dim(), _fe.degree(), Part::traction));
+  // The three operators over subdomain 1 of the marked facets.
+  std::vector<std::int32_t> ones(facets.size(), 1);
+  const dolfinx::mesh::MeshTags<std::int32_t> marked(
+      fe.mesh(), tdim - 1, std::move(facets), std::move(ones));
+  const int dim = fe.dim();
+  auto assemble = [&](Part part)
+  {
+    return dolfinx::la::petsc::Matrix(
+        fe.assemble_facet_matrix(
+            boundary_form(dim, fe.degree(), part),
+            {{"centre",
+              std::vector<double>(centre.begin(), centre.begin() + dim)},
+             {"alpha_n", {factors.normal}},
+             {"alpha_t", {factors.tangential}}},
+            marked),
+        false);
+  };
+  _springs = assemble(Part::spring);
+  _dashpots = assemble(Part::dashpot);
+  _traction = assemble(Part::traction);
 }
 } // namespace damseis::fem

@@ -7,6 +7,7 @@
 #include "elastic_model.h"
 #include <array>
 #include <damseis/boundary/viscous_spring.h>
+#include <dolfinx/la/petsc.h>
 #include <vector>
 
 namespace damseis::fem
@@ -25,21 +26,20 @@ public:
 
   /// Springs K_b, dashpots C_b and the traction operator T (f = T w for a
   /// nodal field w of free-field stresses, see the forms), with the layout
-  /// and storage of the model's matrices; the caller owns them.
-  Mat springs() const;
-  Mat dashpots() const;
-  Mat traction_operator() const;
+  /// and storage of the model's matrices, assembled once here; the
+  /// boundary owns them (share them with PetscObjectReference, e.g.
+  /// dolfinx::la::petsc::Matrix(A, true)).
+  Mat springs() const { return _springs.mat(); }
+  Mat dashpots() const { return _dashpots.mat(); }
+  Mat traction_operator() const { return _traction.mat(); }
   /// Local node (block) indices of V on the boundary, owned and ghost.
   const std::vector<std::int32_t>& blocks() const { return _blocks; }
   /// The boundary's area (length in 2D), summed over the ranks.
   double measure() const { return _measure; }
 
 private:
-  Mat assemble(const ufcx_form& form) const;
-  const ElasticModel& _fe;
-  std::shared_ptr<dolfinx::mesh::MeshTags<std::int32_t>> _marked;
-  std::array<double, 3> _centre;
-  boundary::SpringFactors _factors;
+  dolfinx::la::petsc::Matrix _springs{nullptr, false},
+      _dashpots{nullptr, false}, _traction{nullptr, false};
   std::vector<std::int32_t> _blocks;
   double _measure = 0.0;
 };
