@@ -126,49 +126,6 @@ std::vector<GroupVector> group_vectors(const input::Case& c,
   return out;
 }
 
-/// The highest and the lowest vertex of the cells with these tags (their
-/// last coordinate is the elevation), the same on every rank.
-std::array<std::array<double, 3>, 2>
-extreme_vertices(const geometry::Model& model, const std::set<int>& regions)
-{
-  const auto& mesh = *model.mesh;
-  const int tdim = mesh.topology().dim();
-  const auto cells = geometry::tagged_entities(
-      *model.cell_tags, std::vector<int>(regions.begin(), regions.end()));
-  const auto nodes =
-      dolfinx::mesh::entities_to_geometry(mesh, tdim, cells, false);
-  const auto& x = mesh.geometry().x();
-  struct
-  {
-    double v;
-    int rank;
-  } hi{-HUGE_VAL, 0}, lo{-HUGE_VAL, 0};
-  MPI_Comm_rank(mesh.comm(), &hi.rank);
-  lo.rank = hi.rank;
-  std::array<std::array<double, 3>, 2> p{};
-  for (std::int32_t n : nodes)
-  {
-    const double z = x[3 * n + tdim - 1];
-    if (z > hi.v)
-    {
-      hi.v = z;
-      p[0] = {x[3 * n], x[3 * n + 1], x[3 * n + 2]};
-    }
-    if (-z > lo.v)
-    {
-      lo.v = -z;
-      p[1] = {x[3 * n], x[3 * n + 1], x[3 * n + 2]};
-    }
-  }
-  for (auto [local, i] : {std::pair{hi, 0}, std::pair{lo, 1}})
-  {
-    decltype(hi) global;
-    MPI_Allreduce(&local, &global, 1, MPI_DOUBLE_INT, MPI_MAXLOC, mesh.comm());
-    MPI_Bcast(p[i].data(), 3, MPI_DOUBLE, global.rank, mesh.comm());
-  }
-  return p;
-}
-
 /// The lowest elevation of the facets with these tags (HUGE_VAL if none).
 double lowest_facet_point(const geometry::Model& model,
                           const std::set<int>& tags)
@@ -820,6 +777,47 @@ void read_recording(const input::Case& c, DamModelConfig& cfg)
   }
 }
 } // namespace
+
+std::array<std::array<double, 3>, 2>
+extreme_vertices(const geometry::Model& model, const std::set<int>& regions)
+{
+  const auto& mesh = *model.mesh;
+  const int tdim = mesh.topology().dim();
+  const auto cells = geometry::tagged_entities(
+      *model.cell_tags, std::vector<int>(regions.begin(), regions.end()));
+  const auto nodes =
+      dolfinx::mesh::entities_to_geometry(mesh, tdim, cells, false);
+  const auto& x = mesh.geometry().x();
+  struct
+  {
+    double v;
+    int rank;
+  } hi{-HUGE_VAL, 0}, lo{-HUGE_VAL, 0};
+  MPI_Comm_rank(mesh.comm(), &hi.rank);
+  lo.rank = hi.rank;
+  std::array<std::array<double, 3>, 2> p{};
+  for (std::int32_t n : nodes)
+  {
+    const double z = x[3 * n + tdim - 1];
+    if (z > hi.v)
+    {
+      hi.v = z;
+      p[0] = {x[3 * n], x[3 * n + 1], x[3 * n + 2]};
+    }
+    if (-z > lo.v)
+    {
+      lo.v = -z;
+      p[1] = {x[3 * n], x[3 * n + 1], x[3 * n + 2]};
+    }
+  }
+  for (auto [local, i] : {std::pair{hi, 0}, std::pair{lo, 1}})
+  {
+    decltype(hi) global;
+    MPI_Allreduce(&local, &global, 1, MPI_DOUBLE_INT, MPI_MAXLOC, mesh.comm());
+    MPI_Bcast(p[i].data(), 3, MPI_DOUBLE, global.rank, mesh.comm());
+  }
+  return p;
+}
 
 DamModelConfig read_dam_model_config(const input::Case& c)
 {

@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -106,6 +107,11 @@ input::Schema dam_model_schema();
 /// cell. Throws input::InputError (one line naming the file and key or
 /// group).
 DamModelConfig read_dam_model_config(const input::Case& c);
+
+/// The highest and the lowest vertex of the cells with these tags (their
+/// last coordinate is the elevation), the same on every rank. Collective.
+std::array<std::array<double, 3>, 2>
+extreme_vertices(const geometry::Model& model, const std::set<int>& regions);
 
 /// supports.viscous_spring: the rock (every region but the dam's, one
 /// material with mass), the spring factors, the scattering centre, the

@@ -7,63 +7,28 @@
 #include <dolfinx/mesh/Mesh.h>
 #include <dolfinx/mesh/MeshTags.h>
 #include <dolfinx/mesh/utils.h>
-#include <utility>
 
 namespace damseis::analysis
 {
 namespace
 {
-/// The lowest elevation of the mesh (every rank).
-double lowest_point(const geometry::Model& model)
-{
-  const auto& mesh = *model.mesh;
-  const int gdim = mesh.geometry().dim();
-  std::span<const double> x = mesh.geometry().x();
-  double z = HUGE_VAL;
-  for (std::size_t i = 0; i < x.size() / 3; ++i)
-    z = std::min(z, x[3 * i + gdim - 1]);
-  MPI_Allreduce(MPI_IN_PLACE, &z, 1, MPI_DOUBLE, MPI_MIN, mesh.comm());
-  return z;
-}
-
-/// The lowest vertex of the dam's cells and the distance from `centre` to
-/// the nearest vertex of the facets tagged `boundary` (every rank).
-std::pair<std::array<double, 3>, double> lowest_dam_point_and_clearance(
-    const geometry::Model& model, const std::vector<int>& dam_regions,
-    const std::vector<int>& boundary, const std::array<double, 3>* centre)
+/// The distance from `centre` to the nearest vertex of the facets tagged
+/// `boundary` (every rank).
+double clearance(const geometry::Model& model, const std::vector<int>& boundary,
+                 const std::array<double, 3>& centre)
 {
   const auto& mesh = *model.mesh;
   const int tdim = mesh.topology().dim();
   std::span<const double> x = mesh.geometry().x();
-  const auto cells = geometry::tagged_entities(*model.cell_tags, dam_regions);
-  const auto nodes =
-      dolfinx::mesh::entities_to_geometry(mesh, tdim, cells, false);
-  struct
-  {
-    double z;
-    int rank;
-  } low{HUGE_VAL, 0};
-  MPI_Comm_rank(mesh.comm(), &low.rank);
-  std::array<double, 3> p{};
-  for (std::int32_t n : nodes)
-    if (x[3 * n + tdim - 1] < low.z)
-    {
-      low.z = x[3 * n + tdim - 1];
-      p = {x[3 * n], x[3 * n + 1], x[3 * n + 2]};
-    }
-  decltype(low) global;
-  MPI_Allreduce(&low, &global, 1, MPI_DOUBLE_INT, MPI_MINLOC, mesh.comm());
-  MPI_Bcast(p.data(), 3, MPI_DOUBLE, global.rank, mesh.comm());
-  const std::array<double, 3> c = centre ? *centre : p;
   const auto facets = geometry::tagged_entities(*model.facet_tags, boundary);
-  const auto fnodes =
+  const auto nodes =
       dolfinx::mesh::entities_to_geometry(mesh, tdim - 1, facets, false);
   double d = HUGE_VAL;
-  for (std::int32_t n : fnodes)
-    d = std::min(d, std::hypot(x[3 * n] - c[0], x[3 * n + 1] - c[1],
-                               x[3 * n + 2] - c[2]));
+  for (std::int32_t n : nodes)
+    d = std::min(d, std::hypot(x[3 * n] - centre[0], x[3 * n + 1] - centre[1],
+                               x[3 * n + 2] - centre[2]));
   MPI_Allreduce(MPI_IN_PLACE, &d, 1, MPI_DOUBLE, MPI_MIN, mesh.comm());
-  return {p, d};
+  return d;
 }
 
 /// The one rock of the regions outside the dam; fails unless they share
@@ -128,23 +93,27 @@ void read_wave_foundation(const input::Case& c, DamModelConfig& cfg)
            "has " + std::to_string(centre.size()) + " coordinates",
            std::to_string(dim) + " coordinates, or [] for the dam's lowest "
                                  "point");
-  std::array<double, 3> given{};
+  const geometry::Model& model = cfg.mesh->model;
+  const std::set<int> dam(cfg.seismic.dam_regions.begin(),
+                          cfg.seismic.dam_regions.end());
+  std::set<int> all;
+  for (const Region& r : cfg.regions)
+    all.insert(cfg.mesh->groups.at(r.group).tag);
+  const std::array<double, 3> lowest = extreme_vertices(model, dam)[1];
+  w.centre = lowest;
   for (std::size_t i = 0; i < centre.size(); ++i)
-    given[i] = centre[i];
-  const auto [lowest, clearance] = lowest_dam_point_and_clearance(
-      cfg.mesh->model, cfg.seismic.dam_regions, w.boundary_tags,
-      centre.empty() ? nullptr : &given);
-  w.centre = centre.empty() ? lowest : given;
+    w.centre[i] = centre[i];
   w.rock = {rock.E, rock.nu, rock.rho,
             dim == 2 && cfg.plane == fem::PlaneMode::plane_stress};
-  w.z_base = lowest_point(cfg.mesh->model);
+  w.z_base = extreme_vertices(model, all)[1][dim - 1];
   w.z_surface = lowest[dim - 1];
   if (!(w.z_surface > w.z_base))
     c.fail("supports.viscous_spring",
            "needs rock below the dam, and the dam's lowest point is the "
            "model's",
            "a foundation under the dam");
-  if (!(clearance > 1e-3 * (w.z_surface - w.z_base)))
+  if (!(clearance(model, w.boundary_tags, w.centre) >
+        1e-3 * (w.z_surface - w.z_base)))
     c.fail("foundation.centre",
            "is on the viscous-spring boundary (the springs G / R would be "
            "infinite)",
