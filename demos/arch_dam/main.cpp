@@ -47,12 +47,13 @@ nlohmann::json foundation_study(MPI_Comm comm, const ArchDamConfig& config,
 {
   return run_foundation_study(
       comm, config.foundation_ratios, out_dir, "foundation_study",
-      [&](double ratio, bool viscous_spring,
+      [&](double ratio, FoundationBoundary boundary,
           const std::vector<double>& damping_hz,
           const std::filesystem::path& dir)
       {
         ArchDamConfig c =
-            with_foundation(config, ratio * config.concrete.E, viscous_spring);
+            with_foundation(config, ratio * config.concrete.E,
+                            boundary == FoundationBoundary::viscous_spring);
         c.foundation_ratios.clear();
         if (!damping_hz.empty())
           c.seismic.damping_frequencies_hz = damping_hz;

@@ -73,9 +73,19 @@ expect mesh_size_implausible 'koyna\.toml.*mesh\.size.*0\.001 <= size' --set mes
 # The viscous-spring foundation (issue 20).
 expect viscous_spring_without_block 'koyna\.toml.*foundation\.boundary.*foundation\.enabled = true' --set foundation.boundary=viscous_spring
 expect viscous_spring_with_htc 'koyna\.toml.*foundation\.boundary.*HTC' --set foundation.enabled=true --set foundation.boundary=viscous_spring --set material.model=plastic
-expect unknown_boundary 'koyna\.toml.*foundation\.boundary' --set foundation.enabled=true --set foundation.boundary=mtf
+expect unknown_boundary 'koyna\.toml.*foundation\.boundary' --set foundation.enabled=true --set foundation.boundary=bogus
 expect split_without_block 'koyna\.toml.*foundation\.split.*foundation\.enabled = true' --set foundation.split=layers
 expect split_below_the_block 'koyna\.toml.*foundation\.split_depth.*foundation\.depth' --set foundation.enabled=true --set foundation.split=layers --set foundation.split_depth=150
+# The multi-transmitting boundary (issue 20): order 2 on P2 drifts, the
+# formula's s = c_p dt / dx above 1, a time step above the explicit band's
+# stable step (found after the modal stage, before anything is written), a
+# split block, a band thicker than the block beside the dam.
+mtf=(--set foundation.enabled=true --set foundation.boundary=mtf)
+expect mtf_order_two_on_p2 'koyna\.toml.*foundation\.mtf_order.*mesh\.order = 1' "${mtf[@]}"
+expect mtf_courant_above_one 'koyna\.toml.*time\.dt.*multi-transmitting.*at most' "${mtf[@]}" --set mesh.order=1
+expect mtf_above_stable_step 'time\.dt = 0\.0028 s is above the stable step' "${mtf[@]}" --set mesh.order=1 --set mesh.size=4 --set foundation.band_size=10 --set time.dt=0.0028
+expect mtf_split_block 'koyna\.toml.*foundation\.boundary.*split' "${mtf[@]}" --set mesh.order=1 --set foundation.split=layers
+expect mtf_band_too_thick 'koyna\.toml.*foundation\.band_size' "${mtf[@]}" --set mesh.order=1 --set foundation.band_size=40 --set time.dt=0.001
 expect rock_density_implausible 'koyna\.toml.*foundation\.rho' --set foundation.enabled=true --set foundation.boundary=viscous_spring --set foundation.rho=0
 
 if [ "$failures" -ne 0 ]; then

@@ -12,6 +12,7 @@
 // column is at rest again. Rayleigh damping is on: it acts on the motion
 // relative to the free field, so it must not change either result.
 #include "fem_test_support.h"
+#include "soil_column.h"
 #include <damseis/analysis/free_field_load.h>
 #include <damseis/boundary/free_field.h>
 #include <damseis/boundary/layered_column.h>
@@ -27,41 +28,6 @@ namespace
 {
 constexpr double pi = std::numbers::pi;
 constexpr int bottom = 5, sides = 6;
-
-/// d(t) = A sin^4(pi t / T) on [0, T]: a pulse from rest to rest.
-double pulse(double A, double T, double t)
-{
-  return t <= 0 || t >= T ? 0.0 : A * std::pow(std::sin(pi * t / T), 4);
-}
-std::vector<double> pulse_acceleration(double A, double T, double dt, int n)
-{
-  std::vector<double> a(n + 1, 0.0);
-  const double w = pi / T;
-  for (int k = 0; k <= n && k * dt < T; ++k)
-  {
-    const double s = std::sin(w * k * dt), c = std::cos(w * k * dt);
-    a[k] = A * w * w * (12 * s * s * c * c - 4 * s * s * s * s);
-  }
-  return a;
-}
-
-/// The value of component c of x at the node at p (collective).
-double node_value(const dolfinx::fem::FunctionSpace& V, Vec x, const Point& p,
-                  int c)
-{
-  const int bs = V.dofmap()->index_map_bs();
-  const std::int32_t n = V.dofmap()->index_map->size_local();
-  const std::vector<double> X = V.tabulate_dof_coordinates(false);
-  const double* a = nullptr;
-  VecGetArrayRead(x, &a);
-  double v = 0.0;
-  for (std::int32_t i = 0; i < n; ++i)
-    if (std::abs(X[3 * i] - p[0]) < 1e-9 &&
-        std::abs(X[3 * i + 1] - p[1]) < 1e-9)
-      v = a[bs * i + c];
-  VecRestoreArrayRead(x, &a);
-  return global_sum(v);
-}
 
 struct ColumnResult
 {
@@ -139,7 +105,7 @@ ColumnResult run_column(int c, double T, bool layered = false)
   else
     field = std::make_shared<boundary::VerticalFreeField>(
         boundary::VerticalFreeField::from_outcrop(rock, 2, -H, 0, outcrop, dt));
-  const analysis::FreeFieldLoad load(fe, b, ground, field, M.mat(), K.mat(),
+  const analysis::FreeFieldLoad load(fe, &b, ground, field, M.mat(), K.mat(),
                                      rayleigh, dt);
   dynamics::LinearNewmark newmark(M.mat(), K.mat(), rayleigh, {dt, 0.0},
                                   linalg::Factorization::automatic, {Cb.mat()});

@@ -12,7 +12,7 @@ using dolfinx::la::petsc::Matrix;
 using dolfinx::la::petsc::Vector;
 
 FreeFieldLoad::FreeFieldLoad(const fem::ElasticModel& fe,
-                             const fem::ViscousBoundary& b,
+                             const fem::ViscousBoundary* b,
                              const geometry::GroundSurface& ground,
                              std::shared_ptr<const boundary::FreeField> field,
                              Mat M, Mat K, dynamics::RayleighDamping damping,
@@ -20,16 +20,19 @@ FreeFieldLoad::FreeFieldLoad(const fem::ElasticModel& fe,
     : _field(std::move(field)), _M(M), _K(K), _tie(tie), _damping(damping),
       _dt(dt), _dim(fe.dim())
 {
-  _Kb = Matrix(b.springs(), true);
-  _Cb = Matrix(b.dashpots(), true);
-  _T = Matrix(b.traction_operator(), true);
+  if (b)
+  {
+    _Kb = Matrix(b->springs(), true);
+    _Cb = Matrix(b->dashpots(), true);
+    _T = Matrix(b->traction_operator(), true);
+  }
   if (sustained)
   {
     _sustained = linalg::column_vector(K);
     VecCopy(sustained, _sustained.vec());
   }
   for (Vector* v : {&_u_b, &_v_b, &_s_b, &_v_all, &_f_full})
-    *v = linalg::column_vector(_Kb.mat());
+    *v = linalg::column_vector(b ? _Kb.mat() : (tie ? tie : K));
   _work = linalg::column_vector(K);
   if (tie)
   {
@@ -75,11 +78,16 @@ FreeFieldLoad::FreeFieldLoad(const fem::ElasticModel& fe,
     _x[i] = {x[3 * i], x[3 * i + 1], x[3 * i + 2]};
     _z_ground[i] = ground.height(_x[i]);
   }
+  // (With a transmitting boundary its prescribed nodes move with the free
+  // field too: their velocity enters the damping force of their
+  // neighbours.)
   _fixed.assign(n, 0);
+  if (!b)
+    return;
   for (std::int32_t dof : fe.fixed_dofs())
     if (dof / _dim < n)
       _fixed[dof / _dim] = 1;
-  for (std::int32_t block : b.blocks())
+  for (std::int32_t block : b->blocks())
     if (block < n)
       _boundary.push_back(block);
 }
@@ -119,9 +127,14 @@ void FreeFieldLoad::assemble(int k, Vec f) const
   VecRestoreArray(_v_all.vec(), &va);
 
   // The boundary forces (all dofs), onto the system's unknowns.
-  MatMult(_Kb.mat(), _u_b.vec(), _f_full.vec());
-  MatMultAdd(_Cb.mat(), _v_b.vec(), _f_full.vec(), _f_full.vec());
-  MatMultAdd(_T.mat(), _s_b.vec(), _f_full.vec(), _f_full.vec());
+  if (_Kb.mat())
+  {
+    MatMult(_Kb.mat(), _u_b.vec(), _f_full.vec());
+    MatMultAdd(_Cb.mat(), _v_b.vec(), _f_full.vec(), _f_full.vec());
+    MatMultAdd(_T.mat(), _s_b.vec(), _f_full.vec(), _f_full.vec());
+  }
+  else
+    VecSet(_f_full.vec(), 0.0);
   if (_tie)
     MatMultTranspose(_tie, _f_full.vec(), f);
   else

@@ -29,12 +29,14 @@ namespace damseis::analysis
 class FreeFieldLoad : public engine::DynamicLoad
 {
 public:
+  /// `b`: the viscous-spring boundary, or null (a transmitting boundary
+  /// prescribes its nodes: then only the damping's term, at every node).
   /// M and K: the system's (K with the boundary's springs), on the
   /// system's unknowns: all dofs, or with `tie` (bonded joints) the tied
   /// unknowns u = P u_r; `damping`: the Rayleigh damping of C = a_M M +
   /// b_K K (+ the dashpots). `sustained`: a load held through the run
   /// (copied, system layout), or null. The matrices must outlive the load.
-  FreeFieldLoad(const fem::ElasticModel& fe, const fem::ViscousBoundary& b,
+  FreeFieldLoad(const fem::ElasticModel& fe, const fem::ViscousBoundary* b,
                 const geometry::GroundSurface& ground,
                 std::shared_ptr<const boundary::FreeField> field, Mat M, Mat K,
                 dynamics::RayleighDamping damping, double dt, Mat tie = nullptr,

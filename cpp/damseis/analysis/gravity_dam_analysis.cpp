@@ -25,6 +25,8 @@ std::map<int, fem::Material> section_materials(const GravityDamConfig& cfg)
   std::map<int, fem::Material> materials = {{tags::dam, dam}};
   if (cfg.section.foundation)
     materials[tags::foundation] = cfg.rock;
+  if (cfg.section.band_layers > 0)
+    materials[tags::foundation_band] = cfg.rock;
   if (cfg.section.foundation_split != geometry::GravityDamSection::Split::none)
   {
     fem::Material second = cfg.rock;
@@ -106,7 +108,8 @@ GravityDamModel gravity_dam_model(MPI_Comm comm, const GravityDamConfig& cfg,
   // viscous-spring boundary is held by its springs.
   if (!foundation)
     m.fe->fix({tags::dam_base});
-  else if (!cfg.wave)
+  else if (!cfg.wave || cfg.wave->mtf) // (mtf: for the static and modal
+    // stages; the time history prescribes these nodes)
     m.fe->fix({tags::foundation_bottom, tags::foundation_sides});
   if (cfg.silt.level > 0.0)
     m.silt_and_uplift.emplace_back(fem::assemble_silt(*m.fe, cfg.silt), false);
@@ -145,9 +148,13 @@ nlohmann::json gravity_dam_results(MPI_Comm comm, const GravityDamConfig& cfg,
           : "gravity dam section, HTC concrete (" + to_string(kind) + ")";
   summary["plane"] = cfg.plane == fem::PlaneMode::plane_stress ? "plane_stress"
                                                                : "plane_strain";
-  summary["base"] = !cfg.section.foundation ? "rigid"
-                    : cfg.wave ? "foundation with mass, viscous-spring boundary"
-                               : "massless foundation";
+  summary["base"] =
+      !cfg.section.foundation ? "rigid"
+      : cfg.wave              ? (cfg.wave->mtf ? "foundation with mass, multi-"
+                                                 "transmitting boundary"
+                                               : "foundation with mass, viscous-spring "
+                                                 "boundary")
+                              : "massless foundation";
   summary["dam_E_pa"] = cfg.concrete_model.params.E;
   summary["dam_E_factor"] = cfg.concrete_model.applied.E;
   summary["silt_level_m"] = cfg.silt.level;

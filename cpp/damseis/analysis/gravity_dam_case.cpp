@@ -2,6 +2,7 @@
 #include <damseis/geometry/mesh_estimate.h>
 #include <damseis/geometry/tags.h>
 #include <damseis/results/singular_points.h>
+#include <sstream>
 
 namespace damseis::analysis
 {
@@ -63,8 +64,32 @@ input::Schema gravity_dam_schema()
            "fixed: massless block fixed at its sides and bottom, the ground "
            "motion as base acceleration; viscous_spring: the block with "
            "mass (foundation.rho) and a viscous-spring boundary, the ground "
-           "motion as the outcrop motion of vertically incident waves",
-           {"fixed", "viscous_spring"});
+           "motion as the outcrop motion of vertically incident waves; mtf: "
+           "the same with Liao's multi-transmitting boundary on a "
+           "structured band of explicit elements (foundation.band_*, "
+           "foundation.mtf_*)",
+           {"fixed", "viscous_spring", "mtf"});
+  s.integer("foundation.mtf_order", "2", "-",
+            "order N of the multi-transmitting formula (2 needs mesh.order "
+            "= 1)")
+      .between(1, 2);
+  s.real("foundation.mtf_drift", "0.0001", "-",
+         "drift control gamma_d of the multi-transmitting formula (b = 1 / "
+         "(1 + gamma_d)): the boundary is fixed at zero frequency and "
+         "reflects the frequencies with omega dt of the order of gamma_d")
+      .at_least(0)
+      .at_most(0.1);
+  s.integer("foundation.band_layers", "4", "-",
+            "layers of square cells in the structured band along the "
+            "block's sides and bottom (boundary = mtf; at least N nodes "
+            "inward of the boundary: 2N cells for P1, N for P2)")
+      .between(1, 20);
+  s.real("foundation.band_size", "10.0", "m",
+         "cell size of the structured band (boundary = mtf); its node "
+         "spacing (size / order) is the formula's dx and sets the explicit "
+         "band's stable time step")
+      .above(0)
+      .at_most(1000);
   s.real("foundation.rho", "2640", "kg/m3",
          "mass density of the rock (with boundary = viscous_spring; the "
          "fixed block is massless)")
@@ -156,6 +181,69 @@ input::Schema gravity_dam_schema()
 
 namespace
 {
+/// The multi-transmitting boundary's keys (boundary = mtf): the band in
+/// the mesh, the formula's order and drift.
+void read_transmitting(const input::Case& c, GravityDamConfig& g)
+{
+  auto& s = g.section;
+  Transmitting& t = g.transmitting;
+  t.order = static_cast<int>(c.integer("foundation.mtf_order"));
+  t.drift = c.real("foundation.mtf_drift");
+  t.band_region = tags::foundation_band;
+  if (g.boundary != FoundationBoundary::transmitting)
+    return;
+  if (s.foundation_split != geometry::GravityDamSection::Split::none)
+    c.fail("foundation.boundary",
+           "mtf is not yet available with a split foundation block",
+           "foundation.split = \"none\" or boundary = \"viscous_spring\"");
+  if (g.order == 2 && t.order == 2)
+    c.fail("foundation.mtf_order",
+           "2 drifts away on P2 elements (the band's lumped lattice "
+           "alternates vertex and midside masses; tests/fem/"
+           "test_mtf_boundary.cpp)",
+           "mesh.order = 1, or foundation.mtf_order = 1");
+  s.band_layers = static_cast<int>(c.integer("foundation.band_layers"));
+  s.band_size = c.real("foundation.band_size");
+  t.spacing = s.band_size / g.order;
+  if (s.band_layers * g.order < t.order)
+    c.fail("foundation.band_layers",
+           "is too few for the formula's stencil (N node spacings inward)",
+           "at least " + std::to_string((t.order + g.order - 1) / g.order) +
+               " layers");
+  const double w = s.band_layers * s.band_size;
+  if (!(w < s.foundation_depth &&
+        w < 0.5 * (s.foundation_width - (s.toe_x - s.heel_x))))
+    c.fail("foundation.band_size",
+           "makes the band (band_layers x band_size) reach the dam or the "
+           "block's depth",
+           "a band thinner than the block beside and below the dam");
+}
+
+/// The time step against the multi-transmitting formula's s = c_p dt / dx
+/// <= 1 (c_p of the stiffest rock the case runs).
+void check_transmitting_step(const input::Case& c, const GravityDamConfig& g,
+                             double largest_E)
+{
+  if (g.boundary != FoundationBoundary::transmitting)
+    return;
+  const boundary::Rock rock{largest_E, g.rock.nu, g.rock_rho,
+                            g.plane == fem::PlaneMode::plane_stress};
+  const double dt = g.seismic.scheme.dt, dx = g.transmitting.spacing;
+  const double courant = rock.cp() * dt / dx;
+  if (courant > 1.0)
+  {
+    std::ostringstream problem, fix;
+    problem << "is too large for the multi-transmitting boundary: s = c_p dt "
+               "/ dx = "
+            << courant << " (c_p " << rock.cp() << " m/s, dx " << dx
+            << " m) must be at most 1";
+    fix << "time.dt at most " << dx / rock.cp()
+        << " s (the explicit band's stable step is smaller still: the run "
+           "states it), or a larger foundation.band_size";
+    c.fail("time.dt", problem.str(), fix.str());
+  }
+}
+
 /// The foundation block's keys: size, mesh, rock, split (the boundary
 /// and the study are read with the seismic keys).
 void read_foundation_block(const input::Case& c, GravityDamConfig& g)
@@ -232,11 +320,15 @@ GravityDamConfig read_gravity_dam_config(const input::Case& c)
   g.write_mesh_file = c.boolean("output.mesh_file");
   read_foundation_block(c, g);
   geometry::check_cell_estimate(c, geometry::estimated_cells(s));
-  const bool viscous_spring =
-      c.string("foundation.boundary") == "viscous_spring";
+  const std::string boundary = c.string("foundation.boundary");
+  g.boundary = boundary == "viscous_spring" ? FoundationBoundary::viscous_spring
+               : boundary == "mtf"          ? FoundationBoundary::transmitting
+                                            : FoundationBoundary::fixed;
+  const bool viscous_spring = g.boundary != FoundationBoundary::fixed;
   if (viscous_spring && !s.foundation)
     c.fail("foundation.boundary", "needs a foundation block",
            "foundation.enabled = true");
+  read_transmitting(c, g);
 
   g.seismic = read_seismic_settings(c, gravity_dam_directions(), 2, s.crest_y,
                                     {s.heel_x, s.crest_y, 0.0},
@@ -249,6 +341,13 @@ GravityDamConfig read_gravity_dam_config(const input::Case& c)
         c, key, x, 2, geometry::distance_from_model(s, x[0], x[1]), s.mesh_size,
         s.foundation ? "the dam section or its foundation block"
                      : "the dam section");
+  }
+  {
+    double largest_E = g.rock.E;
+    if (c.boolean("study.table6"))
+      for (double r : c.reals("study.foundation_ratios"))
+        largest_E = std::max(largest_E, r * g.concrete.E);
+    check_transmitting_step(c, g, largest_E);
   }
   s.water_level = g.seismic.reservoir.level;
   if (s.water_level > 0.0 && s.water_level < 0.1 * s.mesh_size)
@@ -287,7 +386,7 @@ GravityDamConfig read_gravity_dam_config(const input::Case& c)
                       c.real("foundation.spring_tangential")};
   if (viscous_spring && g.concrete_model.kind != ConcreteModelKind::linear)
     c.fail("foundation.boundary",
-           "viscous_spring is not yet available with HTC concrete",
+           boundary + " is not yet available with HTC concrete",
            "material.model = \"linear\" or foundation.boundary = "
            "\"fixed\"");
   if (c.boolean("study.table6"))
@@ -305,7 +404,7 @@ GravityDamConfig read_gravity_dam_config(const input::Case& c)
              "ratios E_f / E_d such as [0.5, 1.0, 2.0]");
   }
   if (viscous_spring)
-    g = with_foundation(g, g.rock.E, true);
+    g = with_foundation(g, g.rock.E, g.boundary);
   g.seismic.faces = {{"upstream", {tags::upstream_face}},
                      {"downstream", {tags::downstream_face}}};
   // The section counterclockwise from the heel: heel and toe are singular
@@ -318,17 +417,19 @@ GravityDamConfig read_gravity_dam_config(const input::Case& c)
   return g;
 }
 GravityDamConfig with_foundation(const GravityDamConfig& cfg, double E_f,
-                                 bool viscous_spring)
+                                 FoundationBoundary boundary)
 {
   GravityDamConfig g = cfg;
   const auto& s = g.section;
   g.rock.E = E_f;
-  g.rock.rho = viscous_spring ? g.rock_rho : 0.0;
+  g.rock.rho = boundary != FoundationBoundary::fixed ? g.rock_rho : 0.0;
   g.wave.reset();
   g.seismic.gravity_regions.clear();
-  if (!viscous_spring)
+  if (boundary == FoundationBoundary::fixed)
     return g;
   WaveFoundation w;
+  if (boundary == FoundationBoundary::transmitting)
+    w.mtf = g.transmitting;
   w.boundary_tags = {tags::foundation_bottom, tags::foundation_sides};
   w.centre = {0.5 * (s.heel_x + s.toe_x), s.base_y, 0.0};
   w.factors = g.spring_factors;

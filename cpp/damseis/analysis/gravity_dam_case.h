@@ -27,6 +27,10 @@ struct GravityDamConfig
   /// input as vertically incident waves), or none (massless, fixed at its
   /// far boundary).
   std::optional<WaveFoundation> wave;
+  /// foundation.boundary, and the multi-transmitting boundary's settings
+  /// (used with boundary = mtf).
+  FoundationBoundary boundary = FoundationBoundary::fixed;
+  Transmitting transmitting;
   /// The rock's density with mass and the viscous-spring factors (used
   /// with a viscous-spring boundary).
   double rock_rho = 2640.0;
@@ -65,9 +69,10 @@ input::Schema gravity_dam_schema();
 GravityDamConfig read_gravity_dam_config(const input::Case& c);
 
 /// The configuration with a foundation block of modulus E_f: massless and
-/// fixed at its far boundary, or (`viscous_spring`) with mass
-/// (cfg.rock_rho), a viscous-spring boundary and wave input, the dead
+/// fixed at its far boundary, or with mass (cfg.rock_rho), a viscous-
+/// spring or a multi-transmitting boundary (cfg.transmitting; the mesh
+/// needs its band: cfg.section.band_layers) and wave input, the dead
 /// weight then on the dam only.
 GravityDamConfig with_foundation(const GravityDamConfig& cfg, double E_f,
-                                 bool viscous_spring);
+                                 FoundationBoundary boundary);
 } // namespace damseis::analysis

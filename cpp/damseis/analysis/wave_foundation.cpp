@@ -1,4 +1,5 @@
 #include "wave_foundation.h"
+#include <cmath>
 
 namespace damseis::analysis
 {
@@ -20,5 +21,20 @@ make_free_field(const WaveFoundation& w, int dim,
     return std::make_shared<SideBySideFreeField>(
         w.right->first, homogeneous(w.rock), homogeneous(w.right->second));
   return homogeneous(w.rock);
+}
+
+fem::KnownField
+separated_field(std::shared_ptr<const boundary::FreeField> field,
+                const geometry::GroundSurface& ground, double dt)
+{
+  return [field, &ground, dt](const std::array<double, 3>& x, bool bottom,
+                              double t) -> std::array<double, 3>
+  {
+    if (bottom)
+      return field->incident(x, t);
+    return field
+        ->at(x, ground.height(x), static_cast<int>(std::lround(t / dt)), t)
+        .u;
+  };
 }
 } // namespace damseis::analysis

@@ -164,6 +164,23 @@ std::string VerticalFreeField::description() const
          std::to_string(_rock.cp()) + " m/s)";
 }
 
+std::array<double, 3> FreeField::incident(const std::array<double, 3>&,
+                                          double) const
+{
+  throw std::logic_error("this free field does not give its incident wave "
+                         "alone (a transmitting boundary needs it)");
+}
+
+std::array<double, 3>
+VerticalFreeField::incident(const std::array<double, 3>& x, double t) const
+{
+  std::array<double, 3> u{};
+  for (int i = 0; i < _dim; ++i)
+    if (!_incident[i].empty())
+      u[i] = _incident[i].displacement(arrivals(x[_dim - 1], _zs, t, i).up);
+  return u;
+}
+
 std::string SideBySideFreeField::description() const
 {
   return "two rocks side by side at x = " + std::to_string(_x) + ": " +

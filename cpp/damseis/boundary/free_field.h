@@ -77,6 +77,11 @@ public:
   {
     return at(x, z_ground, k, t).v;
   }
+  /// The up-going incident wave alone at x, time t (the known field at
+  /// the bottom of a transmitting boundary); throws std::logic_error for a
+  /// field that does not separate it.
+  virtual std::array<double, 3> incident(const std::array<double, 3>& x,
+                                         double t) const;
   /// How much later the free surface moves than the outcrop record [s].
   virtual double surface_delay() const = 0;
   /// Whether the record of component i was baseline corrected.
@@ -128,6 +133,8 @@ public:
   {
     return velocity(x[_dim - 1], z_ground, t);
   }
+  std::array<double, 3> incident(const std::array<double, 3>& x,
+                                 double t) const override;
   std::string description() const override;
 
   /// The state at height z (<= z_surface; above it, the surface's) and
@@ -186,6 +193,11 @@ public:
                                  double t) const override
   {
     return (x[0] < _x ? *_left : *_right).velocity(x, z_ground, k, t);
+  }
+  std::array<double, 3> incident(const std::array<double, 3>& x,
+                                 double t) const override
+  {
+    return (x[0] < _x ? *_left : *_right).incident(x, t);
   }
   double surface_delay() const override
   {

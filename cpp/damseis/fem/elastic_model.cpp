@@ -127,11 +127,14 @@ ElasticModel::constants(const Reservoir* r,
 std::shared_ptr<dfem::Form<double>> ElasticModel::make_form(
     ufcx_form* form, std::vector<std::shared_ptr<const FunctionSpace>> spaces,
     const Reservoir* reservoir, const std::array<double, 3>& g,
-    std::shared_ptr<const Function> u,
-    std::shared_ptr<const Function> rho) const
+    std::shared_ptr<const Function> u, std::shared_ptr<const Function> rho,
+    std::shared_ptr<const Function> mu,
+    std::shared_ptr<const Function> lmbda) const
 {
   std::map<std::string, std::shared_ptr<const Function>> coefficients = {
-      {"mu", _mu}, {"lmbda", _lmbda}, {"rho", rho ? rho : _rho}};
+      {"mu", mu ? mu : _mu},
+      {"lmbda", lmbda ? lmbda : _lmbda},
+      {"rho", rho ? rho : _rho}};
   if (u)
     coefficients["u"] = u;
   const std::map<dfem::IntegralType, const dolfinx::mesh::MeshTags<int>*>
@@ -343,6 +346,84 @@ Mat ElasticModel::assemble_facet_matrix(
                         a, _bcs);
   finish_matrix(A);
   return A;
+}
+
+std::shared_ptr<ElasticModel::Function>
+ElasticModel::zeroed_on(const Function& f, const std::vector<int>& regions,
+                        bool keep) const
+{
+  auto g = std::make_shared<Function>(f.function_space());
+  std::span<const double> in = f.x()->array();
+  std::span<double> out = g->x()->mutable_array();
+  std::copy(in.begin(), in.end(), out.begin());
+  const auto& tags = *_model.cell_tags;
+  const auto& dofmap = *f.function_space()->dofmap();
+  for (std::size_t i = 0; i < tags.indices().size(); ++i)
+  {
+    const bool listed = std::find(regions.begin(), regions.end(),
+                                  tags.values()[i]) != regions.end();
+    if (listed != keep)
+      for (std::int32_t dof : dofmap.cell_dofs(tags.indices()[i]))
+        out[dof] = 0.0;
+  }
+  g->x()->scatter_fwd();
+  return g;
+}
+
+ElasticModel::Partitioned
+ElasticModel::assemble_partitioned(const std::vector<int>& explicit_regions,
+                                   const Reservoir* reservoir) const
+{
+  const std::vector<std::shared_ptr<const dfem::DirichletBC<double>>> none;
+  auto assemble = [&](const dfem::Form<double>& a)
+  {
+    Mat A = dfem::petsc::create_matrix(a, _matrix_type);
+    MatZeroEntries(A);
+    dfem::assemble_matrix(
+        dolfinx::la::petsc::Matrix::set_block_fn(A, ADD_VALUES), a, none);
+    finish_matrix(A);
+    return A;
+  };
+  Partitioned p;
+  p.K = assemble(*make_form(_forms.a_stiffness, {_V, _V}));
+  p.K_implicit = assemble(
+      *make_form(_forms.a_stiffness, {_V, _V}, nullptr, {0, 0, 0}, nullptr,
+                 nullptr, zeroed_on(*_mu, explicit_regions, false),
+                 zeroed_on(*_lmbda, explicit_regions, false)));
+  // M: consistent on the implicit cells (and the added mass), then the
+  // explicit cells' HRZ-lumped diagonal.
+  p.M =
+      assemble(*make_form(_forms.a_mass, {_V, _V}, nullptr, {0, 0, 0}, nullptr,
+                          zeroed_on(*_rho, explicit_regions, false)));
+  if (reservoir && reservoir->depth() > 0.0)
+  {
+    auto ma = make_form(_forms.a_added_mass, {_V, _V}, reservoir);
+    dfem::assemble_matrix(
+        dolfinx::la::petsc::Matrix::set_block_fn(p.M, ADD_VALUES), *ma, none);
+    finish_matrix(p.M);
+  }
+  Mat M_e =
+      assemble(*make_form(_forms.a_mass, {_V, _V}, nullptr, {0, 0, 0}, nullptr,
+                          zeroed_on(*_rho, explicit_regions, true)));
+  Vec ones, row_sums, diagonal;
+  MatCreateVecs(M_e, &ones, &row_sums);
+  VecDuplicate(ones, &diagonal);
+  VecSet(ones, 1.0);
+  MatMult(M_e, ones, row_sums);
+  MatGetDiagonal(M_e, diagonal);
+  PetscScalar mass = 0.0, trace = 0.0;
+  VecSum(row_sums, &mass);
+  VecSum(diagonal, &trace);
+  if (trace > 0.0)
+  {
+    VecScale(diagonal, mass / trace);
+    MatDiagonalSet(p.M, diagonal, ADD_VALUES);
+  }
+  p.M_explicit = diagonal;
+  for (Vec* v : {&ones, &row_sums})
+    VecDestroy(v);
+  MatDestroy(&M_e);
+  return p;
 }
 
 double ElasticModel::region_measure(int region) const

@@ -144,6 +144,24 @@ public:
       const std::map<std::string, std::vector<double>>& constants,
       const dolfinx::mesh::MeshTags<std::int32_t>& facets) const;
 
+  /// The operators of an implicit-explicit partition
+  /// (dynamics::PartitionedNewmark) whose explicit group is the cells of
+  /// `explicit_regions`, on all dofs and without boundary conditions: K of
+  /// all cells, K_implicit of the other cells alone, and M consistent on
+  /// the other cells (with the added mass of `reservoir`), lumped on the
+  /// explicit ones by HRZ (each element's diagonal scaled to its mass: for
+  /// straight-sided simplices of one kind a single factor, sum(M_E 1) /
+  /// trace(M_E), P1 giving the row sums and P2 triangles positive vertex
+  /// and midside masses in the ratio 6 : 32). The caller owns the PETSc
+  /// objects. Collective.
+  struct Partitioned
+  {
+    Mat K = nullptr, K_implicit = nullptr, M = nullptr;
+    Vec M_explicit = nullptr; ///< the explicit cells' lumped mass alone
+  };
+  Partitioned assemble_partitioned(const std::vector<int>& explicit_regions,
+                                   const Reservoir* reservoir) const;
+
   /// Sum over all ranks of the volume (area in 2D) of cells of `region`.
   double region_measure(int region) const;
 
@@ -156,7 +174,14 @@ private:
             const Reservoir* reservoir = nullptr,
             const std::array<double, 3>& g = {0, 0, 0},
             std::shared_ptr<const Function> u = nullptr,
-            std::shared_ptr<const Function> rho = nullptr) const;
+            std::shared_ptr<const Function> rho = nullptr,
+            std::shared_ptr<const Function> mu = nullptr,
+            std::shared_ptr<const Function> lmbda = nullptr) const;
+  /// A copy of the cellwise coefficient f, zero on the cells of `regions`
+  /// (or, with `keep`, zero elsewhere).
+  std::shared_ptr<Function> zeroed_on(const Function& f,
+                                      const std::vector<int>& regions,
+                                      bool keep) const;
   Vec assemble_load(const dolfinx::fem::Form<double>& L, bool apply_bc) const;
 
   geometry::Model _model;

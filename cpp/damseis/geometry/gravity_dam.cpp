@@ -81,6 +81,18 @@ void validate(const GravityDamSection& s)
                 s.foundation_mesh_size >= 0,
             "foundation_mesh_size must be >= 0 (0 -> 2.5 x mesh_size), got " +
                 str(s.foundation_mesh_size));
+    if (s.band_layers > 0)
+    {
+      const double w = s.band_layers * s.band_size;
+      require(std::isfinite(s.band_size) and s.band_size > 0,
+              "band_size must be positive, got " + str(s.band_size));
+      require(s.foundation_split == GravityDamSection::Split::none,
+              "a structured band needs an unsplit foundation block");
+      require(w < s.foundation_depth and w < 0.5 * (s.foundation_width - base),
+              "the structured band (" + str(w) +
+                  " m) must be thinner than the block's depth and than "
+                  "its width beside the dam");
+    }
     if (s.foundation_split == GravityDamSection::Split::layers)
       require(std::isfinite(s.split_depth) and s.split_depth > 0 and
                   s.split_depth < s.foundation_depth,
@@ -92,9 +104,87 @@ void validate(const GravityDamSection& s)
 /// The foundation block's curves and surfaces (built-in kernel).
 struct FoundationBlock
 {
-  std::vector<int> foundation, foundation_2, bottom, left, right;
-  int floor = -1, top_down = -1;
+  std::vector<int> foundation, foundation_2, band, bottom, left, right;
+  std::vector<int> floor, top_down;
 };
+
+/// A straight line meshed with `segments` equal segments.
+int structured_line(int a, int b, int segments)
+{
+  const int l = gmsh::model::geo::addLine(a, b);
+  gmsh::model::geo::mesh::setTransfiniteCurve(l, segments + 1);
+  return l;
+}
+
+/// The block with a structured band of `s.band_layers` layers of cells of
+/// size `s.band_size` along its sides and bottom: five transfinite
+/// surfaces (two corners, the bottom strip, the two side strips) around
+/// the unstructured inner block.
+FoundationBlock build_banded_block(const GravityDamSection& s,
+                                   const std::vector<int>& base, int heel,
+                                   int toe, double lc_far)
+{
+  namespace geo = gmsh::model::geo;
+  FoundationBlock b;
+  const double h = s.band_size, w = s.band_layers * h;
+  const double xc = 0.5 * (s.heel_x + s.toe_x);
+  const double xl = xc - 0.5 * s.foundation_width;
+  const double xr = xc + 0.5 * s.foundation_width;
+  const double yb = s.base_y - s.foundation_depth, yt = s.base_y;
+  auto point = [&](double x, double y) { return geo::addPoint(x, y, 0, h); };
+  // Outer corners, the band's inner corners, and where the inner lines
+  // meet the outer boundary.
+  const int bl = point(xl, yb), br = point(xr, yb), tr = point(xr, yt),
+            tl = point(xl, yt);
+  const int ibl = point(xl + w, yb + w), ibr = point(xr - w, yb + w);
+  const int itl = point(xl + w, yt), itr = point(xr - w, yt);
+  const int lb = point(xl, yb + w), rb = point(xr, yb + w);
+  const int bb_l = point(xl + w, yb), bb_r = point(xr - w, yb);
+  const int n_w = s.band_layers;
+  const int n_x = std::max(
+      1, static_cast<int>(std::lround((s.foundation_width - 2 * w) / h)));
+  const int n_y =
+      std::max(1, static_cast<int>(std::lround((s.foundation_depth - w) / h)));
+  // Outer boundary.
+  const int bot_l = structured_line(bl, bb_l, n_w);
+  const int bot_m = structured_line(bb_l, bb_r, n_x);
+  const int bot_r = structured_line(bb_r, br, n_w);
+  const int side_rb = structured_line(br, rb, n_w);
+  const int side_r = structured_line(rb, tr, n_y);
+  const int side_l = structured_line(tl, lb, n_y);
+  const int side_lb = structured_line(lb, bl, n_w);
+  // Inner lines of the band.
+  const int in_bl = structured_line(bb_l, ibl, n_w);
+  const int in_br = structured_line(bb_r, ibr, n_w);
+  const int in_lb = structured_line(lb, ibl, n_w);
+  const int in_rb = structured_line(rb, ibr, n_w);
+  const int in_b = structured_line(ibl, ibr, n_x);
+  const int in_r = structured_line(ibr, itr, n_y);
+  const int in_l = structured_line(itl, ibl, n_y);
+  const int top_l = structured_line(itl, tl, n_w);
+  const int top_r = structured_line(tr, itr, n_w);
+  auto surface = [](const std::vector<int>& loop, bool transfinite)
+  {
+    const int sf = geo::addPlaneSurface({geo::addCurveLoop(loop, -1, false)});
+    if (transfinite)
+      geo::mesh::setTransfiniteSurface(sf, "Left");
+    return sf;
+  };
+  b.band = {surface({bot_l, in_bl, -in_lb, side_lb}, true),
+            surface({bot_m, in_br, -in_b, -in_bl}, true),
+            surface({bot_r, side_rb, in_rb, -in_br}, true),
+            surface({-in_rb, side_r, top_r, -in_r}, true),
+            surface({side_l, in_lb, -in_l, top_l}, true)};
+  b.top_down = {top_r, geo::addLine(itr, toe)};
+  b.floor = {geo::addLine(heel, itl), top_l};
+  b.foundation = {
+      surface({in_b, in_r, b.top_down[1], -base[0], b.floor[0], in_l}, false)};
+  b.bottom = {bot_l, bot_m, bot_r};
+  b.left = {side_l, side_lb};
+  b.right = {side_rb, side_r};
+  (void)lc_far;
+  return b;
+}
 
 /// The block below the dam, sharing the base curves (`base`: heel to toe,
 /// in two at `base_mid` when split side by side); in two regions if split.
@@ -113,8 +203,8 @@ FoundationBlock build_foundation_block(const GravityDamSection& s,
   const int br = geo::addPoint(xr, yb, 0, lc_far);
   const int tr = geo::addPoint(xr, s.base_y, 0, lc_far);
   const int tl = geo::addPoint(xl, s.base_y, 0, lc_far);
-  b.top_down = geo::addLine(tr, toe);
-  b.floor = geo::addLine(heel, tl);
+  b.top_down = {geo::addLine(tr, toe)};
+  b.floor = {geo::addLine(heel, tl)};
   auto surface = [](const std::vector<int>& loop)
   { return geo::addPlaneSurface({geo::addCurveLoop(loop, -1, false)}); };
   if (s.foundation_split == Split::side_by_side)
@@ -125,9 +215,9 @@ FoundationBlock build_foundation_block(const GravityDamSection& s,
     b.right = {geo::addLine(br, tr)};
     b.left = {geo::addLine(tl, bl)};
     b.foundation = {
-        surface({b.bottom[0], split, -base[0], b.floor, b.left[0]})};
+        surface({b.bottom[0], split, -base[0], b.floor[0], b.left[0]})};
     b.foundation_2 = {
-        surface({b.bottom[1], b.right[0], b.top_down, -base[1], -split})};
+        surface({b.bottom[1], b.right[0], b.top_down[0], -base[1], -split})};
   }
   else if (s.foundation_split == Split::layers)
   {
@@ -138,8 +228,8 @@ FoundationBlock build_foundation_block(const GravityDamSection& s,
     const int interface = geo::addLine(ml, mr);
     b.right = {geo::addLine(br, mr), geo::addLine(mr, tr)};
     b.left = {geo::addLine(tl, ml), geo::addLine(ml, bl)};
-    b.foundation = {surface(
-        {interface, b.right[1], b.top_down, -base[0], b.floor, b.left[0]})};
+    b.foundation = {surface({interface, b.right[1], b.top_down[0], -base[0],
+                             b.floor[0], b.left[0]})};
     b.foundation_2 = {
         surface({b.bottom[0], b.right[0], -interface, b.left[1]})};
   }
@@ -148,8 +238,8 @@ FoundationBlock build_foundation_block(const GravityDamSection& s,
     b.bottom = {geo::addLine(bl, br)};
     b.right = {geo::addLine(br, tr)};
     b.left = {geo::addLine(tl, bl)};
-    b.foundation = {surface(
-        {b.bottom[0], b.right[0], b.top_down, -base[0], b.floor, b.left[0]})};
+    b.foundation = {surface({b.bottom[0], b.right[0], b.top_down[0], -base[0],
+                             b.floor[0], b.left[0]})};
   }
   return b;
 }
@@ -207,7 +297,9 @@ void build_and_mesh(const GravityDamSection& s)
   if (s.foundation)
   {
     lc_far = s.foundation_mesh_size > 0 ? s.foundation_mesh_size : 2.5 * lc;
-    block = build_foundation_block(s, base, heel, toe, base_mid, lc_far);
+    block = s.band_layers > 0
+                ? build_banded_block(s, base, heel, toe, lc_far)
+                : build_foundation_block(s, base, heel, toe, base_mid, lc_far);
   }
   geo::synchronize();
 
@@ -232,8 +324,10 @@ void build_and_mesh(const GravityDamSection& s)
     std::vector<int> sides = block.left;
     sides.insert(sides.end(), block.right.begin(), block.right.end());
     group(1, sides, tags::foundation_sides);
-    group(1, {block.floor}, tags::reservoir_floor);
-    group(1, {block.top_down}, tags::foundation_top_downstream);
+    if (!block.band.empty())
+      group(2, block.band, tags::foundation_band);
+    group(1, block.floor, tags::reservoir_floor);
+    group(1, block.top_down, tags::foundation_top_downstream);
   }
 
   gmsh::option::setNumber("Mesh.Algorithm", 6);

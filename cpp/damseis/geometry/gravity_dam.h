@@ -51,6 +51,12 @@ struct GravityDamSection
   };
   Split foundation_split = Split::none;
   double split_depth = 0; ///< [m] below base_y, for Split::layers
+  /// A structured band along the block's sides and bottom (a transmitting
+  /// boundary's, fem/mtf_boundary.h): `band_layers` layers of square cells
+  /// of size `band_size` [m] (each split into two triangles), tagged
+  /// foundation_band; 0: none. Needs Split::none.
+  int band_layers = 0;
+  double band_size = 0;
 };
 
 /// @brief Builds the section with gmsh on rank 0, meshes it with linear
@@ -64,7 +70,8 @@ struct GravityDamSection
 /// is a foundation), foundation_bottom = 5, foundation_sides = 6 (left and
 /// right verticals), reservoir_floor = 7 (foundation top upstream of the
 /// heel), foundation_top_downstream = 8 (downstream of the toe). The dam
-/// and the foundation are conforming (they share the base curve).
+/// and the foundation are conforming (they share the base curve). With a
+/// band (band_layers > 0) its cells are the region foundation_band = 4.
 ///
 /// Collective on `comm`.
 /// @param[in] comm Communicator over which the mesh is distributed.

@@ -14,6 +14,9 @@ enum Region : int
   /// A second rock region (2D sections with a split foundation block: the
   /// right half, or the lower layer).
   foundation_2 = 3,
+  /// The structured band of a transmitting boundary along the
+  /// foundation's sides and bottom (its explicit elements).
+  foundation_band = 4,
 };
 
 /// Facet (boundary) tags.
@@ -79,6 +82,8 @@ inline std::string region_name(int tag)
     return "foundation";
   case foundation_2:
     return "foundation_2";
+  case foundation_band:
+    return "foundation_band";
   default:
     return "region_" + std::to_string(tag);
   }

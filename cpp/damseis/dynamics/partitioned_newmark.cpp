@@ -1,0 +1,291 @@
+#include "partitioned_newmark.h"
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace damseis::dynamics
+{
+namespace
+{
+/// Spectral radius of one step of the partition's explicit group for one
+/// degree of freedom of circular frequency omega (unit mass): a_M
+/// implicit, b_K omega^2 explicit.
+double spectral_radius(double omega, double dt, RayleighDamping c)
+{
+  const double beta = 0.25, gamma = 0.5;
+  const double w2 = omega * omega;
+  Eigen::Matrix3d step;
+  for (int j = 0; j < 3; ++j)
+  {
+    Eigen::Vector3d x = Eigen::Vector3d::Zero();
+    x[j] = 1.0;
+    const double d = x[0] + dt * x[1] + dt * dt * (0.5 - beta) * x[2];
+    const double v = x[1] + (1.0 - gamma) * dt * x[2];
+    const double a = (-(c.a_mass + c.b_stiffness * w2) * v - w2 * d) /
+                     (1.0 + gamma * dt * c.a_mass);
+    step.col(j) << d + beta * dt * dt * a, v + gamma * dt * a, a;
+  }
+  return step.eigenvalues().cwiseAbs().maxCoeff();
+}
+
+/// Whether every frequency up to omega_max is stable at dt (the
+/// tolerance above 1 covers the eigenvalues' round-off where two of them
+/// meet on the unit circle, of order sqrt(machine epsilon)).
+bool stable(double omega_max, double dt, RayleighDamping c)
+{
+  const int samples = 200;
+  for (int i = 1; i <= samples; ++i)
+    if (spectral_radius(omega_max * i / samples, dt, c) > 1.0 + 1e-6)
+      return false;
+  return true;
+}
+} // namespace
+
+double explicit_stable_step(double omega_max, RayleighDamping damping)
+{
+  if (!(omega_max > 0.0 && std::isfinite(omega_max)))
+    throw std::invalid_argument("explicit_stable_step: omega_max must be "
+                                "positive");
+  // Bisection between a stable step and an unstable one (undamped 2 /
+  // omega_max is the limit; damping lowers it).
+  double lo = 0.0, hi = 2.5 / omega_max;
+  while (stable(omega_max, hi, damping))
+    hi *= 2.0;
+  for (int i = 0; i < 60; ++i)
+  {
+    const double mid = 0.5 * (lo + hi);
+    (stable(omega_max, mid, damping) ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+double highest_explicit_frequency(Mat K_explicit, Vec lumped,
+                                  const std::vector<PetscInt>& excluded)
+{
+  Vec x, y, mask;
+  VecDuplicate(lumped, &x);
+  VecDuplicate(lumped, &y);
+  VecDuplicate(lumped, &mask);
+  PetscInt lo = 0, hi = 0;
+  VecGetOwnershipRange(x, &lo, &hi);
+  {
+    const double* d = nullptr;
+    double *xa = nullptr, *m = nullptr;
+    VecGetArrayRead(lumped, &d);
+    VecGetArray(x, &xa);
+    VecGetArray(mask, &m);
+    for (PetscInt i = lo; i < hi; ++i)
+    {
+      m[i - lo] = d[i - lo] > 0.0 ? 1.0 : 0.0;
+      xa[i - lo] = m[i - lo] * (1.0 + 0.5 * std::sin(0.7 * i));
+    }
+    for (PetscInt row : excluded)
+      m[row - lo] = xa[row - lo] = 0.0;
+    VecRestoreArray(mask, &m);
+    VecRestoreArray(x, &xa);
+    VecRestoreArrayRead(lumped, &d);
+  }
+  // D^-1 where D > 0.
+  Vec inverse;
+  VecDuplicate(lumped, &inverse);
+  VecCopy(lumped, inverse);
+  {
+    double* v = nullptr;
+    VecGetArray(inverse, &v);
+    PetscInt n = hi - lo;
+    for (PetscInt i = 0; i < n; ++i)
+      v[i] = v[i] > 0.0 ? 1.0 / v[i] : 0.0;
+    VecRestoreArray(inverse, &v);
+  }
+  double lambda = 0.0;
+  for (int it = 0; it < 5000; ++it)
+  {
+    // lambda = x.K x / x.D x; x <- mask D^-1 K x, normalised.
+    MatMult(K_explicit, x, y);
+    double xKx = 0.0, xDx = 0.0;
+    VecDot(x, y, &xKx);
+    VecPointwiseMult(y, y, inverse);
+    VecPointwiseMult(y, y, mask);
+    VecPointwiseMult(x, x, x); // x.D x (x is replaced below)
+    VecDot(x, lumped, &xDx);
+    const double next = xKx / xDx;
+    double norm = 0.0;
+    VecNormalize(y, &norm);
+    VecCopy(y, x);
+    const bool converged = std::abs(next - lambda) <= 1e-7 * next;
+    lambda = next;
+    if (converged || norm == 0.0)
+      break;
+  }
+  for (Vec* v : {&x, &y, &mask, &inverse})
+    VecDestroy(v);
+  return std::sqrt(std::max(lambda, 0.0));
+}
+
+PartitionedNewmark::PartitionedNewmark(
+    Mat M, Mat K, Mat K_implicit, RayleighDamping damping, double dt,
+    linalg::Factorization factorization,
+    std::shared_ptr<PrescribedDisplacement> prescribed)
+    : _M(M), _K(K), _K_implicit(K_implicit), _damping(damping), _dt(dt),
+      _prescribed(std::move(prescribed))
+{
+  if (!(dt > 0.0 && std::isfinite(dt)))
+    throw std::invalid_argument("time step must be positive");
+  // A = (1 + gamma dt a_M) M + (gamma dt b_K + beta dt^2) K_I, the
+  // prescribed rows identity.
+  MatDuplicate(K_implicit, MAT_COPY_VALUES, &_A);
+  MatScale(_A, _gamma * dt * damping.b_stiffness + _beta * dt * dt);
+  MatAXPY(_A, 1.0 + _gamma * dt * damping.a_mass, M, DIFFERENT_NONZERO_PATTERN);
+  const std::vector<PetscInt> none;
+  const std::vector<PetscInt>& rows = _prescribed ? _prescribed->rows() : none;
+  // The prescribed rows must be explicit (E nodes alone): then their
+  // columns are zero too and identity rows keep A symmetric.
+  for (PetscInt row : rows)
+  {
+    PetscInt n = 0;
+    const PetscInt* cols = nullptr;
+    const PetscScalar* vals = nullptr;
+    MatGetRow(_A, row, &n, &cols, &vals);
+    bool diagonal = true;
+    for (PetscInt j = 0; j < n; ++j)
+      diagonal = diagonal && (cols[j] == row || vals[j] == 0.0);
+    MatRestoreRow(_A, row, &n, &cols, &vals);
+    if (!diagonal)
+      throw std::invalid_argument(
+          "a prescribed unknown is coupled to others in the effective "
+          "matrix: it must belong to explicit (lumped) elements alone");
+  }
+  MatZeroRows(_A, static_cast<PetscInt>(rows.size()), rows.data(), 1.0, nullptr,
+              nullptr);
+  _values.resize(rows.size());
+  MPI_Comm comm;
+  PetscObjectGetComm(reinterpret_cast<PetscObject>(K), &comm);
+  _solver = std::make_unique<linalg::DirectSolver>(comm, factorization);
+  _solver->factorize(_A);
+
+  for (Vec* x : {&_u, &_v, &_a, &_f, &_u_prev, &_d_p, &_v_p, &_rhs, &_Mv, &_Ku,
+                 &_Ma, &_Kv, &_w, &_cv, &_r, &_du, &_mask})
+  {
+    MatCreateVecs(K, x, nullptr);
+    VecSet(*x, 0.0);
+  }
+  std::vector<PetscScalar> ones(rows.size(), 1.0);
+  VecSetValues(_mask, static_cast<PetscInt>(rows.size()), rows.data(),
+               ones.data(), INSERT_VALUES);
+  VecAssemblyBegin(_mask);
+  VecAssemblyEnd(_mask);
+}
+
+PartitionedNewmark::~PartitionedNewmark()
+{
+  for (Vec* x : {&_u, &_v, &_a, &_f, &_u_prev, &_d_p, &_v_p, &_rhs, &_Mv, &_Ku,
+                 &_Ma, &_Kv, &_w, &_cv, &_r, &_du, &_mask})
+    VecDestroy(x);
+  MatDestroy(&_A);
+}
+
+void PartitionedNewmark::set_state(Vec u, Vec v, Vec a, Vec f, Vec u_prev,
+                                   int n)
+{
+  VecCopy(u, _u);
+  VecCopy(v, _v);
+  VecCopy(a, _a);
+  VecCopy(f, _f);
+  VecCopy(u_prev ? u_prev : u, _u_prev);
+  _n = n;
+  MatMult(_M, _v, _Mv);
+  MatMult(_K_implicit, _v, _Kv);
+  MatMult(_K, _u, _Ku);
+  MatMult(_M, _a, _Ma);
+  update_images();
+  update_energies();
+  if (!_energy.started)
+  {
+    _energy.kinetic0 = _energy.kinetic;
+    _energy.strain0 = _energy.strain;
+    _energy.started = true;
+  }
+}
+
+void PartitionedNewmark::update_images()
+{
+  // C v and the prescribed rows' reaction r = M a + C v + K u - f.
+  VecAXPBYPCZ(_cv, _damping.a_mass, _damping.b_stiffness, 0.0, _Mv, _Kv);
+  VecWAXPY(_r, 1.0, _Ma, _cv);
+  VecAXPBYPCZ(_r, 1.0, -1.0, 1.0, _Ku, _f);
+  VecPointwiseMult(_r, _r, _mask);
+}
+
+void PartitionedNewmark::update_energies()
+{
+  double vMv = 0.0, uKu = 0.0;
+  VecDot(_v, _Mv, &vMv);
+  VecDot(_u, _Ku, &uKu);
+  _energy.kinetic = 0.5 * vMv;
+  _energy.strain = 0.5 * uKu;
+}
+
+void PartitionedNewmark::step(Vec f_next)
+{
+  const double dt = _dt, bdt2 = _beta * dt * dt, gdt = _gamma * dt;
+  // The predictors.
+  VecWAXPY(_d_p, dt, _v, _u);
+  VecAXPY(_d_p, (0.5 - _beta) * dt * dt, _a);
+  VecWAXPY(_v_p, (1.0 - _gamma) * dt, _a, _v);
+  // The prescribed displacements at n + 1 from steps n and n - 1.
+  if (_prescribed)
+    _prescribed->values(_n + 1, _u, _u_prev, _values);
+  VecCopy(_u, _u_prev);
+  VecCopy(_u, _du); // the step's start, for the energy balance
+
+  // rhs = f' - a_M M v~ - b_K K_I v~ - K d~ (M v~, K_I v~, K d~ kept: the
+  // new images follow from them).
+  MatMult(_M, _v_p, _Mv);
+  MatMult(_K_implicit, _v_p, _Kv);
+  MatMult(_K, _d_p, _Ku);
+  VecWAXPY(_rhs, -_damping.a_mass, _Mv, f_next);
+  VecAXPBYPCZ(_rhs, -_damping.b_stiffness, -1.0, 1.0, _Kv, _Ku);
+  if (_prescribed)
+  {
+    const std::vector<PetscInt>& rows = _prescribed->rows();
+    std::vector<PetscScalar> d(rows.size()), b(rows.size());
+    VecGetValues(_d_p, static_cast<PetscInt>(rows.size()), rows.data(),
+                 d.data());
+    for (std::size_t i = 0; i < rows.size(); ++i)
+      b[i] = (_values[i] - d[i]) / bdt2;
+    VecSetValues(_rhs, static_cast<PetscInt>(rows.size()), rows.data(),
+                 b.data(), INSERT_VALUES);
+    VecAssemblyBegin(_rhs);
+    VecAssemblyEnd(_rhs);
+  }
+  _solver->solve(_rhs, _a);
+
+  // The new state and its images: M a', K a' by products, the rest by the
+  // same updates as the state.
+  VecWAXPY(_u, bdt2, _a, _d_p);
+  VecWAXPY(_v, gdt, _a, _v_p);
+  MatMult(_M, _a, _Ma);
+  MatMult(_K, _a, _w);
+  VecAXPY(_Ku, bdt2, _w);
+  MatMult(_K_implicit, _a, _w);
+  VecAXPY(_Mv, gdt, _Ma);
+  VecAXPY(_Kv, gdt, _w);
+  ++_n;
+
+  // The energy balance: du times the mean load, damping force and
+  // reaction over the step (trapezoidal rule); the step's start's
+  // forces (C v_n, r_n, f_n) first, then the new state's.
+  VecAYPX(_du, -1.0, _u);
+  const Vec old[3] = {_f, _cv, _r};
+  double w_old[3] = {}, w_new[3] = {};
+  VecMDot(_du, 3, old, w_old);
+  VecCopy(f_next, _f);
+  update_images();
+  VecMDot(_du, 3, old, w_new);
+  _energy.external_work += 0.5 * (w_old[0] + w_new[0]);
+  _energy.damping += 0.5 * (w_old[1] + w_new[1]);
+  _energy.constraint_work += 0.5 * (w_old[2] + w_new[2]);
+  update_energies();
+}
+} // namespace damseis::dynamics

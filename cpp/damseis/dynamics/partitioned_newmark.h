@@ -1,0 +1,124 @@
+// The implicit-explicit partition of Newmark's method (Hughes & Liu 1978;
+// algorithms.md 3.5) for M a + C v + K u = f(t): the elements of the
+// explicit group E (a band next to a transmitting boundary, with lumped
+// mass) see only the predictors
+//   d~ = d_n + dt v_n + dt^2 (1/2 - beta) a_n,   v~ = v_n + (1 - gamma) dt a_n,
+// the implicit group I (the dam and the interior) the new state:
+//   (M + gamma dt C + beta dt^2 K_I) a_{n+1} = f_{n+1} - C v~ - K d~,
+//   d_{n+1} = d~ + beta dt^2 a_{n+1},  v_{n+1} = v~ + gamma dt a_{n+1},
+// K_I the stiffness of the I elements alone, K that of all. The Rayleigh
+// damping is C = a_M M + b_K K_I: its mass-proportional part on all
+// elements (diagonal on E, so implicit there too), its stiffness-
+// proportional part on the I elements only. (Explicit on E it would cut
+// the stable step by sqrt(1 + xi^2) - xi, xi = b_K omega_max / 2: about 5x
+// for 5 % damping of a dam's first modes and a band of 10 m; the band's
+// waves leave through the boundary anyway.) The rows of nodes touched by
+// E elements alone are diagonal: explicit. Unknowns with a prescribed
+// displacement (the transmitting boundary's nodes, E nodes) get
+// a_{n+1} = (d_{n+1} - d~) / (beta dt^2). beta = 1/4, gamma = 1/2.
+//
+// Stability: the I group is unconditionally stable; the E group needs
+// dt <= explicit_stable_step(omega_max of E, {a_M, 0}) = 2 / omega_max.
+#pragma once
+
+#include "newmark.h"
+#include <memory>
+#include <petscmat.h>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace damseis::dynamics
+{
+/// Displacements prescribed at some unknowns at every step (the nodes of a
+/// transmitting boundary), found from the last two states.
+class PrescribedDisplacement
+{
+public:
+  virtual ~PrescribedDisplacement() = default;
+  /// The prescribed unknowns this rank owns (global rows).
+  virtual const std::vector<PetscInt>& rows() const = 0;
+  /// Their displacements at step n + 1 (t = (n + 1) dt), in the order of
+  /// rows(), from the displacement at step n and at step n - 1
+  /// (collective).
+  virtual void values(int n_next, Vec u_n, Vec u_prev,
+                      std::span<double> out) = 0;
+};
+
+/// The largest step for which the explicit group of a partition (mass-
+/// proportional damping implicit, stiffness-proportional explicit: zero
+/// in PartitionedNewmark) is stable up to its highest circular frequency
+/// omega_max [rad/s]: the
+/// largest dt with spectral radius <= 1 of the one-degree-of-freedom
+/// amplification matrix at every omega in (0, omega_max]. Undamped it is
+/// 2 / omega_max (gamma = 1/2, beta 0 or 1/4).
+double explicit_stable_step(double omega_max, RayleighDamping damping);
+
+/// The highest circular frequency [rad/s] of the explicit group: the
+/// square root of the largest lambda of K_E x = lambda D x (K_E the
+/// explicit elements' stiffness, D their lumped mass; unknowns with D = 0
+/// or in `excluded`, global rows this rank owns, left out), by power
+/// iteration from a start that does not depend on the partition (converged
+/// to 1e-7 or 5000 iterations; the Rayleigh quotient approaches it from
+/// below). Collective.
+double highest_explicit_frequency(Mat K_explicit, Vec lumped,
+                                  const std::vector<PetscInt>& excluded);
+
+class PartitionedNewmark
+{
+public:
+  /// M: consistent on I, lumped on E; K: all elements; K_implicit: the I
+  /// elements' (its rows at E-only nodes zero). Fixed dofs as identity
+  /// rows of K and K_implicit and zero rows of M with a zero load. The
+  /// matrices must outlive the integrator.
+  PartitionedNewmark(
+      Mat M, Mat K, Mat K_implicit, RayleighDamping damping, double dt,
+      linalg::Factorization factorization,
+      std::shared_ptr<PrescribedDisplacement> prescribed = nullptr);
+  ~PartitionedNewmark();
+  PartitionedNewmark(const PartitionedNewmark&) = delete;
+  PartitionedNewmark& operator=(const PartitionedNewmark&) = delete;
+
+  /// The state at the current step n (copied): u, v, a, the load f, and
+  /// the displacement of step n - 1 (null: u), and the step number n.
+  void set_state(Vec u, Vec v, Vec a, Vec f, Vec u_prev, int n);
+  /// Advances one step to the load f_next = f(t + dt).
+  void step(Vec f_next);
+
+  Vec u() const { return _u; }
+  Vec v() const { return _v; }
+  Vec a() const { return _a; }
+  /// The displacement one step back (the transmitting boundary's history).
+  Vec u_prev() const { return _u_prev; }
+  /// The energy balance since the start; constraint_work is the work of
+  /// the prescribed unknowns' reactions (the energy the boundary let in,
+  /// negative where it radiates energy out).
+  const EnergyBalance& energy() const { return _energy; }
+  void set_energy(const EnergyBalance& e) { _energy = e; }
+  std::string solver_name() const { return _solver->name(); }
+  double factor_seconds() const { return _solver->factor_seconds(); }
+
+private:
+  /// M x, K x and the reaction at the prescribed rows for the state.
+  void update_images();
+  void update_energies();
+
+  Mat _M, _K, _K_implicit;
+  RayleighDamping _damping;
+  double _dt;
+  static constexpr double _beta = 0.25, _gamma = 0.5;
+  Mat _A = nullptr; ///< the effective matrix (prescribed rows identity)
+  std::unique_ptr<linalg::DirectSolver> _solver;
+  std::shared_ptr<PrescribedDisplacement> _prescribed;
+  std::vector<double> _values;
+  int _n = 0;
+  Vec _u = nullptr, _v = nullptr, _a = nullptr, _f = nullptr, _u_prev = nullptr;
+  /// Work: predictors, right-hand side, images M v, K u, M a, K_I v.
+  Vec _d_p = nullptr, _v_p = nullptr, _rhs = nullptr, _Mv = nullptr,
+      _Ku = nullptr, _Ma = nullptr, _Kv = nullptr, _w = nullptr;
+  /// The state's damping force C v and reaction r (prescribed rows).
+  Vec _cv = nullptr, _r = nullptr, _du = nullptr;
+  Vec _mask = nullptr; ///< 1 at the prescribed rows
+  EnergyBalance _energy;
+};
+} // namespace damseis::dynamics

@@ -1,0 +1,345 @@
+#include "mtf_boundary.h"
+#include <algorithm>
+#include <cmath>
+#include <damseis/linalg/all_gather.h>
+#include <dolfinx/common/IndexMap.h>
+#include <dolfinx/fem/DofMap.h>
+#include <dolfinx/la/petsc.h>
+#include <dolfinx/mesh/Mesh.h>
+#include <dolfinx/mesh/utils.h>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+namespace damseis::fem
+{
+namespace
+{
+using Point = std::array<double, 3>;
+
+/// The mean of the geometry nodes of entity e of dimension d.
+Point centroid(const dolfinx::mesh::Mesh& mesh, int d, std::int32_t e,
+               std::vector<Point>* vertices = nullptr)
+{
+  const std::vector<std::int32_t> e1 = {e};
+  const auto nodes = dolfinx::mesh::entities_to_geometry(mesh, d, e1, false);
+  std::span<const double> x = mesh.geometry().x();
+  Point c = {0, 0, 0};
+  const std::size_t n = nodes.size(); // one entity: its nodes
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    Point p;
+    for (int j = 0; j < 3; ++j)
+      p[j] = x[3 * nodes[i] + j];
+    for (int j = 0; j < 3; ++j)
+      c[j] += p[j] / n;
+    if (vertices)
+      vertices->push_back(p);
+  }
+  return c;
+}
+
+/// The unit normal of a boundary facet pointing out of its cell (from the
+/// facet's first vertices: straight edges, flat triangles).
+Point outward_normal(const dolfinx::mesh::Mesh& mesh, std::int32_t facet,
+                     std::int32_t cell)
+{
+  const int tdim = mesh.topology().dim();
+  std::vector<Point> v;
+  const Point fc = centroid(mesh, tdim - 1, facet, &v);
+  const Point cc = centroid(mesh, tdim, cell);
+  Point n;
+  const Point t1 = {v[1][0] - v[0][0], v[1][1] - v[0][1], v[1][2] - v[0][2]};
+  if (tdim == 2)
+    n = {t1[1], -t1[0], 0.0};
+  else
+  {
+    const Point t2 = {v[2][0] - v[0][0], v[2][1] - v[0][1], v[2][2] - v[0][2]};
+    n = {t1[1] * t2[2] - t1[2] * t2[1], t1[2] * t2[0] - t1[0] * t2[2],
+         t1[0] * t2[1] - t1[1] * t2[0]};
+  }
+  double dot = 0.0, norm = 0.0;
+  for (int j = 0; j < 3; ++j)
+  {
+    dot += n[j] * (fc[j] - cc[j]);
+    norm += n[j] * n[j];
+  }
+  const double scale = (dot < 0.0 ? -1.0 : 1.0) / std::sqrt(norm);
+  for (double& c : n)
+    c *= scale;
+  return n;
+}
+
+std::string format(const Point& x, int dim)
+{
+  std::ostringstream s;
+  s << "(";
+  for (int j = 0; j < dim; ++j)
+    s << (j ? ", " : "") << x[j];
+  s << ")";
+  return s.str();
+}
+
+/// Throws std::invalid_argument with the message of the lowest rank that
+/// has one, on every rank (collective).
+void throw_if_any(MPI_Comm comm, const std::string& message)
+{
+  int rank = 0, first = 0;
+  MPI_Comm_rank(comm, &rank);
+  const int mine = message.empty() ? 1 << 30 : rank;
+  MPI_Allreduce(&mine, &first, 1, MPI_INT, MPI_MIN, comm);
+  if (first == 1 << 30)
+    return;
+  int length = static_cast<int>(message.size());
+  MPI_Bcast(&length, 1, MPI_INT, first, comm);
+  std::string text = message;
+  text.resize(length);
+  MPI_Bcast(text.data(), length, MPI_CHAR, first, comm);
+  throw std::invalid_argument(text);
+}
+} // namespace
+
+MtfBoundary::MtfBoundary(const dolfinx::fem::FunctionSpace& V,
+                         const dolfinx::mesh::MeshTags<std::int32_t>& facets,
+                         const std::vector<int>& boundary_tags,
+                         const std::vector<std::int32_t>& band_cells,
+                         MtfSettings s, KnownField known)
+    : _normal(s.order,
+              std::clamp(s.speed_normal * s.dt / s.spacing, 1e-12, 1.0),
+              s.drift),
+      _tangential(s.order,
+                  std::clamp(s.speed_tangential * s.dt / s.spacing, 1e-12, 1.0),
+                  s.drift),
+      _s(s), _known(std::move(known))
+{
+  const auto& mesh = *V.mesh();
+  const MPI_Comm comm = mesh.comm();
+  if (s.order < 1 || s.order > 2)
+    throw std::invalid_argument("the multi-transmitting boundary takes order "
+                                "1 or 2");
+  if (!(s.speed_tangential > 0.0 && s.courant() <= 1.0))
+  {
+    std::ostringstream m;
+    m << "the multi-transmitting boundary needs s = c_a dt / dx in (0, 1]; "
+         "it is "
+      << s.courant() << " (c_p " << s.speed_normal << " m/s, dt " << s.dt
+      << " s, dx " << s.spacing << " m): a smaller time step";
+    throw std::invalid_argument(m.str());
+  }
+  const auto& dofmap = *V.dofmap();
+  const auto& map = *dofmap.index_map;
+  _dim = dofmap.index_map_bs();
+  const std::int32_t owned = map.size_local();
+  const std::int64_t first_block = map.local_range()[0];
+  const std::vector<double> x = V.tabulate_dof_coordinates(false);
+  auto point = [&](std::int32_t b) -> Point {
+    return {x[3 * b], x[3 * b + 1], x[3 * b + 2]};
+  };
+
+  // The boundary nodes and their normals (the bottom's first).
+  const int tdim = mesh.topology().dim(), fdim = tdim - 1;
+  auto& topology = mesh.topology_mutable();
+  topology.create_connectivity(fdim, tdim);
+  topology.create_connectivity(tdim, fdim);
+  auto f_to_c = topology.connectivity(fdim, tdim);
+  auto c_to_f = topology.connectivity(tdim, fdim);
+  const auto& layout = dofmap.element_dof_layout();
+  std::map<std::int32_t, Node> nodes;
+  for (std::size_t i = 0; i < facets.indices().size(); ++i)
+  {
+    if (std::find(boundary_tags.begin(), boundary_tags.end(),
+                  facets.values()[i]) == boundary_tags.end())
+      continue;
+    const std::int32_t f = facets.indices()[i];
+    const std::int32_t c = f_to_c->links(f)[0];
+    auto cf = c_to_f->links(c);
+    const int local = static_cast<int>(
+        std::distance(cf.begin(), std::find(cf.begin(), cf.end(), f)));
+    const Point n = outward_normal(mesh, f, c);
+    const bool bottom = n[tdim - 1] < -0.9;
+    auto cell_dofs = dofmap.cell_dofs(c);
+    for (int ld : layout.entity_closure_dofs(fdim, local))
+    {
+      const std::int32_t b = cell_dofs[ld];
+      if (b >= owned)
+        continue;
+      auto [it, inserted] = nodes.try_emplace(b, Node{point(b), n, bottom});
+      if (!inserted && bottom && !it->second.bottom)
+        it->second = Node{point(b), n, true};
+    }
+  }
+
+  // The band's nodes, on every rank: global block and coordinates, in a
+  // grid of cells of size dx.
+  std::vector<std::int8_t> in_band(owned, 0);
+  for (std::int32_t c : band_cells)
+    for (std::int32_t b : dofmap.cell_dofs(c))
+      if (b < owned)
+        in_band[b] = 1;
+  std::vector<std::int64_t> band_blocks;
+  std::vector<double> band_x;
+  for (std::int32_t b = 0; b < owned; ++b)
+    if (in_band[b])
+    {
+      band_blocks.push_back(first_block + b);
+      const Point p = point(b);
+      band_x.insert(band_x.end(), p.begin(), p.end());
+    }
+  band_blocks = linalg::all_gather(comm, band_blocks);
+  band_x = linalg::all_gather(comm, band_x);
+  const double dx = s.spacing, tol = 1e-6 * dx;
+  auto key = [dx](const Point& p)
+  {
+    return std::array<std::int64_t, 3>{
+        static_cast<std::int64_t>(std::floor(p[0] / dx)),
+        static_cast<std::int64_t>(std::floor(p[1] / dx)),
+        static_cast<std::int64_t>(std::floor(p[2] / dx))};
+  };
+  std::map<std::array<std::int64_t, 3>, std::vector<std::int32_t>> grid;
+  for (std::size_t i = 0; i < band_blocks.size(); ++i)
+    grid[key({band_x[3 * i], band_x[3 * i + 1], band_x[3 * i + 2]})].push_back(
+        static_cast<std::int32_t>(i));
+  auto find = [&](const Point& p) -> std::int32_t
+  {
+    const auto k = key(p);
+    for (std::int64_t i = -1; i <= 1; ++i)
+      for (std::int64_t j = -1; j <= 1; ++j)
+        for (std::int64_t l = -1; l <= 1; ++l)
+        {
+          auto it = grid.find({k[0] + i, k[1] + j, k[2] + l});
+          if (it == grid.end())
+            continue;
+          for (std::int32_t q : it->second)
+          {
+            const double d =
+                std::hypot(band_x[3 * q] - p[0], band_x[3 * q + 1] - p[1],
+                           band_x[3 * q + 2] - p[2]);
+            if (d < tol)
+              return q;
+          }
+        }
+    return -1;
+  };
+
+  // The stencils, and the blocks they gather.
+  const int width = _normal.stencil();
+  std::map<std::int32_t, std::int32_t> position; // band index -> buffer
+  std::vector<PetscInt> gathered;
+  std::string missing;
+  for (const auto& [b, node] : nodes)
+  {
+    Point nu = node.normal;
+    if (node.bottom) // straight down
+    {
+      nu = {0, 0, 0};
+      nu[tdim - 1] = -1.0;
+    }
+    for (int k = 0; k < width && missing.empty(); ++k)
+    {
+      Point p = node.x;
+      for (int j = 0; j < 3; ++j)
+        p[j] -= k * dx * nu[j];
+      const std::int32_t q = find(p);
+      if (q < 0)
+      {
+        missing = "the foundation has no structured band for the "
+                  "multi-transmitting boundary: no node at " +
+                  format(p, tdim) + ", " + std::to_string(k) +
+                  " node spacings inward of the boundary node at " +
+                  format(node.x, tdim) +
+                  " (the band needs 2N + 1 node layers of spacing " +
+                  std::to_string(dx) + " m along the boundary's normals)";
+        break;
+      }
+      auto [it, inserted] =
+          position.try_emplace(q, static_cast<std::int32_t>(position.size()));
+      if (inserted)
+        for (int c = 0; c < _dim; ++c)
+          gathered.push_back(band_blocks[q] * _dim + c);
+      _stencil.push_back(it->second);
+    }
+    _nodes.push_back({node.x, nu, node.bottom});
+    for (int c = 0; c < _dim; ++c)
+      _rows.push_back((first_block + b) * _dim + c);
+  }
+  throw_if_any(comm, missing);
+  std::int64_t counts[2] = {static_cast<std::int64_t>(_nodes.size()),
+                            std::count_if(_nodes.begin(), _nodes.end(),
+                                          [](const Node& n)
+                                          { return n.bottom; })};
+  MPI_Allreduce(counts, _counts.data(), 2, MPI_INT64_T, MPI_SUM, comm);
+
+  // The scatter from the unknowns' layout to this rank's stencil values.
+  Vec layout_vec = dolfinx::la::petsc::create_vector(map, _dim);
+  IS from;
+  ISCreateGeneral(PETSC_COMM_SELF, static_cast<PetscInt>(gathered.size()),
+                  gathered.data(), PETSC_COPY_VALUES, &from);
+  VecCreateSeq(PETSC_COMM_SELF, static_cast<PetscInt>(gathered.size()), &_now);
+  VecDuplicate(_now, &_prev);
+  VecScatterCreate(layout_vec, from, _now, nullptr, &_scatter);
+  ISDestroy(&from);
+  VecDestroy(&layout_vec);
+}
+
+MtfBoundary::~MtfBoundary()
+{
+  VecScatterDestroy(&_scatter);
+  VecDestroy(&_now);
+  VecDestroy(&_prev);
+}
+
+void MtfBoundary::values(int n_next, Vec u_n, Vec u_prev, std::span<double> out)
+{
+  for (auto [from, to] : {std::pair{u_n, _now}, std::pair{u_prev, _prev}})
+  {
+    VecScatterBegin(_scatter, from, to, INSERT_VALUES, SCATTER_FORWARD);
+    VecScatterEnd(_scatter, from, to, INSERT_VALUES, SCATTER_FORWARD);
+  }
+  const double* now = nullptr;
+  const double* prev = nullptr;
+  VecGetArrayRead(_now, &now);
+  VecGetArrayRead(_prev, &prev);
+  const int width = _normal.stencil(), order = _normal.order();
+  const double dt = _s.dt, dx = _s.spacing;
+  for (std::size_t i = 0; i < _nodes.size(); ++i)
+  {
+    const Node& node = _nodes[i];
+    const double t = n_next * dt;
+    // u_0 = u_in(x_0, t_(n+1)) + sum_j sum_k w_jk (u - u_in)(x_k, t_(n+1-j))
+    // for the normal and the tangential formula's weights.
+    std::array<double, 3> normal{}, tangential{};
+    for (int j = 1; j <= order; ++j)
+    {
+      const double* history = j == 1 ? now : prev;
+      for (int k = 0; k <= 2 * j; ++k)
+      {
+        Point p = node.x;
+        for (int d = 0; d < 3; ++d)
+          p[d] -= k * dx * node.normal[d];
+        const std::array<double, 3> in = _known(p, node.bottom, t - j * dt);
+        const std::int32_t q = _stencil[i * width + k];
+        const double wn = _normal.weight(j, k), wt = _tangential.weight(j, k);
+        for (int c = 0; c < _dim; ++c)
+        {
+          const double scattered = history[q * _dim + c] - in[c];
+          normal[c] += wn * scattered;
+          tangential[c] += wt * scattered;
+        }
+      }
+    }
+    // u = u_in + n (n . normal-formula) + (I - n n^T) tangential-formula.
+    double along = 0.0, t_along = 0.0;
+    for (int c = 0; c < _dim; ++c)
+    {
+      along += node.normal[c] * normal[c];
+      t_along += node.normal[c] * tangential[c];
+    }
+    const std::array<double, 3> u = _known(node.x, node.bottom, t);
+    for (int c = 0; c < _dim; ++c)
+      out[i * _dim + c] =
+          u[c] + tangential[c] + node.normal[c] * (along - t_along);
+  }
+  VecRestoreArrayRead(_now, &now);
+  VecRestoreArrayRead(_prev, &prev);
+}
+} // namespace damseis::fem

@@ -1,0 +1,95 @@
+// Liao's multi-transmitting formula (boundary::MultiTransmittingFormula) on
+// the nodes of a mesh's artificial boundary (algorithms.md 3.3-3.4): each
+// boundary node x_0 with outward normal nu reads the nodes x_k = x_0 - k dx
+// nu (k = 0..2N) of a structured band of uniform node spacing dx along the
+// normal, and its displacement at the next step is
+//   u_0^(p+1) = u_in(x_0, t_(p+1)) + MTF[u - u_in],
+// the formula applied to each Cartesian component of the field less the
+// known one, with the artificial speed c_p for the part along the normal
+// and c_s for the tangential part (waves leaving at normal incidence are P
+// in the one, S in the other), and the known field (wave-field
+// separation): at the bottom the incident wave alone
+// (the down-going reflection must leave through it), on the sides the free
+// field. Nodes on the bottom and a side (corners) belong to the bottom; a
+// node on two sides (3D vertical edges) marches along the first side's
+// normal. Order 1 or 2 (the history is the last two states). The stencils
+// may cross partitions: their values are gathered with a PETSc scatter.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <damseis/boundary/mtf.h>
+#include <damseis/dynamics/partitioned_newmark.h>
+#include <dolfinx/fem/FunctionSpace.h>
+#include <dolfinx/mesh/MeshTags.h>
+#include <functional>
+#include <petscvec.h>
+#include <vector>
+
+namespace damseis::fem
+{
+struct MtfSettings
+{
+  int order = 2;        ///< N, 1 or 2
+  double drift = 0.0;   ///< gamma_d (b = 1 / (1 + gamma_d))
+  double spacing = 0.0; ///< dx: node spacing along the normals [m]
+  /// Artificial speeds c_a [m/s] of the normal and the tangential part.
+  double speed_normal = 0.0, speed_tangential = 0.0;
+  double dt = 0.0; ///< time step [s]
+  /// The larger s = c_a dt / dx, which must lie in (0, 1].
+  double courant() const
+  {
+    return std::max(speed_normal, speed_tangential) * dt / spacing;
+  }
+};
+
+/// The known field of the wave-field separation at x (the last coordinate
+/// vertical) and time t: at the bottom (bottom = true) the incident wave,
+/// on the sides the free field.
+using KnownField = std::function<std::array<double, 3>(
+    const std::array<double, 3>& x, bool bottom, double t)>;
+
+class MtfBoundary : public dynamics::PrescribedDisplacement
+{
+public:
+  /// The nodes of V on the facets tagged `boundary_tags`, their stencils
+  /// among the nodes of `band_cells` (local cells; the structured band).
+  /// Throws std::invalid_argument (one line) if a stencil node is missing
+  /// (the mesh has no structured band of that spacing) or s is outside
+  /// (0, 1]. Collective.
+  MtfBoundary(const dolfinx::fem::FunctionSpace& V,
+              const dolfinx::mesh::MeshTags<std::int32_t>& facets,
+              const std::vector<int>& boundary_tags,
+              const std::vector<std::int32_t>& band_cells, MtfSettings s,
+              KnownField known);
+  ~MtfBoundary();
+  MtfBoundary(const MtfBoundary&) = delete;
+  MtfBoundary& operator=(const MtfBoundary&) = delete;
+
+  const std::vector<PetscInt>& rows() const override { return _rows; }
+  void values(int n_next, Vec u_n, Vec u_prev, std::span<double> out) override;
+  /// The number of boundary nodes (all ranks) and of them on the bottom.
+  std::array<std::int64_t, 2> node_counts() const { return _counts; }
+  const MtfSettings& settings() const { return _s; }
+
+private:
+  struct Node
+  {
+    std::array<double, 3> x, normal;
+    bool bottom;
+  };
+  /// The formula for the normal and for the tangential part.
+  boundary::MultiTransmittingFormula _normal, _tangential;
+  MtfSettings _s;
+  KnownField _known;
+  int _dim;
+  std::vector<Node> _nodes; ///< owned boundary nodes
+  std::vector<PetscInt> _rows;
+  /// Per node, 2N + 1 positions of its stencil nodes in the gathered
+  /// buffers (node-major, the components following).
+  std::vector<std::int32_t> _stencil;
+  std::array<std::int64_t, 2> _counts{};
+  VecScatter _scatter = nullptr;
+  Vec _now = nullptr, _prev = nullptr;
+};
+} // namespace damseis::fem

@@ -1,0 +1,245 @@
+// Verification of the Hughes-Liu implicit-explicit partition
+// (damseis/dynamics/partitioned_newmark.h) on a fixed-free bar of linear
+// elements (E = rho = A = 1, c = 1, element length h = 1), its first half
+// implicit (consistent mass), its second half explicit (lumped mass).
+//
+// References (none calls the library):
+//  * the stability limit of the explicit group: for gamma = 1/2 (beta 0 or
+//    1/4) the one-degree-of-freedom predictor-corrector is stable for
+//    omega dt <= 2 (Hughes & Liu 1978; Hughes, The Finite Element Method,
+//    1987, sec. 9.3 and 8.3); a lumped linear bar element has omega_max =
+//    2 c / h, so dt_crit = h / c (Courant number 1);
+//  * with no explicit elements the partition is Newmark's average
+//    acceleration, which LinearNewmark integrates independently.
+// The matrices live on PETSC_COMM_SELF: under mpirun every rank runs its
+// own serial copy.
+#include <damseis/dynamics/newmark.h>
+#include <damseis/dynamics/partitioned_newmark.h>
+
+#include <cmath>
+#include <gtest/gtest.h>
+#include <petscmat.h>
+#include <random>
+#include <vector>
+
+namespace
+{
+using damseis::dynamics::PartitionedNewmark;
+using damseis::dynamics::RayleighDamping;
+
+struct Bar
+{
+  Mat K = nullptr, K_implicit = nullptr, M = nullptr;
+  int n = 0; ///< nodes (node 0 fixed)
+  ~Bar()
+  {
+    MatDestroy(&K);
+    MatDestroy(&K_implicit);
+    MatDestroy(&M);
+  }
+};
+
+/// A bar of `elements` elements, the first `implicit` of them implicit.
+void make_bar(Bar& bar, int elements, int implicit)
+{
+  const int n = elements + 1;
+  bar.n = n;
+  for (Mat* A : {&bar.K, &bar.K_implicit, &bar.M})
+  {
+    MatCreateSeqAIJ(PETSC_COMM_SELF, n, n, 3, nullptr, A);
+    MatSetOption(*A, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE);
+  }
+  for (int e = 0; e < elements; ++e)
+  {
+    const PetscInt idx[2] = {e, e + 1};
+    const double k[4] = {1, -1, -1, 1};
+    const double m_consistent[4] = {1.0 / 3, 1.0 / 6, 1.0 / 6, 1.0 / 3};
+    const double m_lumped[4] = {0.5, 0, 0, 0.5};
+    MatSetValues(bar.K, 2, idx, 2, idx, k, ADD_VALUES);
+    if (e < implicit)
+    {
+      MatSetValues(bar.K_implicit, 2, idx, 2, idx, k, ADD_VALUES);
+      MatSetValues(bar.M, 2, idx, 2, idx, m_consistent, ADD_VALUES);
+    }
+    else
+      MatSetValues(bar.M, 2, idx, 2, idx, m_lumped, ADD_VALUES);
+  }
+  for (Mat A : {bar.K, bar.K_implicit, bar.M})
+  {
+    for (PetscInt i = 0; i < n; ++i) // keep every diagonal in the pattern
+      MatSetValue(A, i, i, 0.0, ADD_VALUES);
+    MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY);
+    MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY);
+  }
+  // Node 0 fixed: identity rows of K, zero rows of M.
+  const PetscInt fixed = 0;
+  MatZeroRowsColumns(bar.K, 1, &fixed, 1.0, nullptr, nullptr);
+  MatZeroRowsColumns(bar.K_implicit, 1, &fixed, 1.0, nullptr, nullptr);
+  MatZeroRowsColumns(bar.M, 1, &fixed, 0.0, nullptr, nullptr);
+}
+
+/// The largest total energy (kinetic + strain) over the second half of
+/// `steps` free-vibration steps from a random displacement, relative to
+/// the largest over the first half (infinite if it overflows). The
+/// explicit group conserves a nearby energy, not this one, so this one
+/// oscillates (by up to 1 / (1 - (omega dt / 2)^2) in the highest modes);
+/// a stable run does not grow.
+double energy_growth(const Bar& bar, double dt, int steps,
+                     RayleighDamping damping = {})
+{
+  PartitionedNewmark newmark(bar.M, bar.K, bar.K_implicit, damping, dt,
+                             damseis::linalg::Factorization::petsc);
+  Vec u, zero;
+  MatCreateVecs(bar.K, &u, nullptr);
+  VecDuplicate(u, &zero);
+  VecSet(zero, 0.0);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> r(-1.0, 1.0);
+  for (PetscInt i = 1; i < bar.n; ++i)
+    VecSetValue(u, i, r(rng), INSERT_VALUES);
+  VecSetValue(u, 0, 0.0, INSERT_VALUES);
+  VecAssemblyBegin(u);
+  VecAssemblyEnd(u);
+  // The acceleration of the state: M a = -K u (M singular only at node 0).
+  Vec a, Ku;
+  VecDuplicate(u, &a);
+  VecDuplicate(u, &Ku);
+  MatMult(bar.K, u, Ku);
+  VecScale(Ku, -1.0);
+  VecSetValue(Ku, 0, 0.0, INSERT_VALUES);
+  VecAssemblyBegin(Ku);
+  VecAssemblyEnd(Ku);
+  {
+    Mat M1;
+    MatDuplicate(bar.M, MAT_COPY_VALUES, &M1);
+    MatSetValue(M1, 0, 0, 1.0, INSERT_VALUES);
+    MatAssemblyBegin(M1, MAT_FINAL_ASSEMBLY);
+    MatAssemblyEnd(M1, MAT_FINAL_ASSEMBLY);
+    damseis::linalg::DirectSolver s(PETSC_COMM_SELF,
+                                    damseis::linalg::Factorization::petsc);
+    s.factorize_lu(M1);
+    s.solve(Ku, a);
+    MatDestroy(&M1);
+  }
+  newmark.set_state(u, zero, a, zero, nullptr, 0);
+  const double e0 = newmark.energy().kinetic + newmark.energy().strain;
+  double largest[2] = {e0, 0.0};
+  for (int k = 0; k < steps; ++k)
+  {
+    newmark.step(zero);
+    const double e = newmark.energy().kinetic + newmark.energy().strain;
+    double& l = largest[2 * k < steps ? 0 : 1];
+    l = std::max(l, e);
+    if (!std::isfinite(e) || e > 1e12 * e0)
+      return std::numeric_limits<double>::infinity();
+  }
+  for (Vec* v : {&u, &zero, &a, &Ku})
+    VecDestroy(v);
+  return largest[1] / largest[0];
+}
+} // namespace
+
+TEST(PartitionedNewmark, StableStepIsTwoOverOmegaUndamped)
+{
+  // Omega_crit = 2 for gamma = 1/2 (Hughes & Liu 1978).
+  for (double w : {1.0, 37.0, 2.0e3})
+    EXPECT_NEAR(damseis::dynamics::explicit_stable_step(w, {}) * w, 2.0, 1e-9);
+  // Mass-proportional damping (implicit) does not lower it; explicit
+  // stiffness-proportional damping does, monotonically.
+  const double w = 100.0;
+  EXPECT_GE(damseis::dynamics::explicit_stable_step(w, {5.0, 0.0}) * w,
+            2.0 - 1e-9);
+  double last = 2.0;
+  for (double xi : {0.05, 0.2, 0.5})
+  {
+    const double ratio =
+        damseis::dynamics::explicit_stable_step(w, {0.0, 2.0 * xi / w}) * w;
+    EXPECT_LT(ratio, last);
+    last = ratio;
+  }
+}
+
+TEST(PartitionedNewmark, BarIsStableBelowCourantOneAndUnstableAbove)
+{
+  // 20 implicit + 20 explicit elements, h = c = 1: dt_crit = 1 (element
+  // theory); the assembled explicit group's highest frequency is a little
+  // below 2 c / h, so the run is unstable clearly above 1.
+  Bar bar;
+  make_bar(bar, 40, 20);
+  // Below the limit the energy does not grow (the second 10,000 steps'
+  // peak within 1 % of the first's).
+  for (double dt : {0.5, 0.9, 0.98})
+    EXPECT_LT(energy_growth(bar, dt, 20000), 1.01) << "dt = " << dt;
+  // Above it the energy grows without bound.
+  EXPECT_GT(energy_growth(bar, 1.05, 20000), 1e6);
+}
+
+TEST(PartitionedNewmark, HighestExplicitFrequencyOfTheBar)
+{
+  // The explicit half of the bar (20 lumped elements, its inner end tied
+  // to the implicit half, its outer end free): the chain's highest
+  // frequency lies just below the element's 2 c / h (within 1 %: the
+  // free-fixed lumped chain of n elements has 2 sin((2n - 1) pi /
+  // (4n)) = 2 - O(1/n^2)).
+  Bar bar;
+  make_bar(bar, 40, 20);
+  Mat K_e;
+  MatDuplicate(bar.K, MAT_COPY_VALUES, &K_e);
+  MatAXPY(K_e, -1.0, bar.K_implicit, DIFFERENT_NONZERO_PATTERN);
+  Vec D;
+  MatCreateVecs(bar.K, &D, nullptr);
+  VecSet(D, 0.0);
+  for (int e = 20; e < 40; ++e)
+  {
+    VecSetValue(D, e, 0.5, ADD_VALUES);
+    VecSetValue(D, e + 1, 0.5, ADD_VALUES);
+  }
+  VecAssemblyBegin(D);
+  VecAssemblyEnd(D);
+  const double w = damseis::dynamics::highest_explicit_frequency(K_e, D, {});
+  EXPECT_GT(w, 1.98);
+  EXPECT_LE(w, 2.0 + 1e-12);
+  MatDestroy(&K_e);
+  VecDestroy(&D);
+}
+
+TEST(PartitionedNewmark, WithoutExplicitElementsItIsNewmark)
+{
+  // All elements implicit: the partition is Newmark's average
+  // acceleration with C = a_M M + b_K K, as LinearNewmark (displacement
+  // form) integrates it; a load ramp at the free end.
+  Bar bar;
+  make_bar(bar, 12, 12);
+  const RayleighDamping damping{0.3, 0.002};
+  const double dt = 0.05;
+  PartitionedNewmark p(bar.M, bar.K, bar.K_implicit, damping, dt,
+                       damseis::linalg::Factorization::petsc);
+  damseis::dynamics::LinearNewmark l(bar.M, bar.K, damping, {dt, 0.0},
+                                     damseis::linalg::Factorization::petsc);
+  Vec zero, f;
+  MatCreateVecs(bar.K, &zero, nullptr);
+  VecDuplicate(zero, &f);
+  VecSet(zero, 0.0);
+  p.set_state(zero, zero, zero, zero, nullptr, 0);
+  l.set_state(zero, zero, zero, zero);
+  for (int k = 1; k <= 300; ++k)
+  {
+    VecSet(f, 0.0);
+    VecSetValue(f, bar.n - 1, std::sin(0.1 * k), INSERT_VALUES);
+    VecAssemblyBegin(f);
+    VecAssemblyEnd(f);
+    p.step(f);
+    l.step(f);
+  }
+  double du = 0.0, u = 0.0;
+  VecNorm(l.u(), NORM_INFINITY, &u);
+  VecWAXPY(f, -1.0, p.u(), l.u());
+  VecNorm(f, NORM_INFINITY, &du);
+  EXPECT_GT(u, 1e-3);
+  EXPECT_LT(du, 1e-10 * u);
+  // The energy balance closes for the trapezoidal rule.
+  const auto& e = p.energy();
+  EXPECT_LT(std::abs(e.error()), 1e-10 * e.external_work);
+  VecDestroy(&zero);
+  VecDestroy(&f);
+}
