@@ -100,9 +100,11 @@ ConcreteStepper::ConcreteStepper(
     Mat M, Mat K0, dynamics::RayleighDamping damping,
     dynamics::TimeScheme scheme, ConcreteSystem& system,
     fem::ConcreteModel& model, dynamics::NewtonSettings newton,
-    linalg::Factorization factorization, Vec u_static, Vec f_int_static)
+    linalg::Factorization factorization, Vec u_static, Vec f_int_static,
+    Mat extra_damping)
     : _K0(K0), _system(system), _model(model),
-      _newmark(M, K0, damping, scheme, system, newton, factorization),
+      _newmark(M, K0, damping, scheme, system, newton, factorization,
+               extra_damping),
       _u_static(copy(u_static)),
       _f_int_static(copy(f_int_static)), _restored{Vector(nullptr, false),
                                                    Vector(nullptr, false),

@@ -42,12 +42,13 @@ class ConcreteStepper : public engine::Stepper
 public:
   /// `u_static`, `f_int_static`: the displacement and internal force of the
   /// static stage (copied), where the run starts (the state is total).
-  /// M, K0 and the system must outlive the stepper.
+  /// M, K0 and the system (and `extra_damping`: boundary dashpots, or
+  /// null) must outlive the stepper.
   ConcreteStepper(Mat M, Mat K0, dynamics::RayleighDamping damping,
                   dynamics::TimeScheme scheme, ConcreteSystem& system,
                   fem::ConcreteModel& model, dynamics::NewtonSettings newton,
                   linalg::Factorization factorization, Vec u_static,
-                  Vec f_int_static);
+                  Vec f_int_static, Mat extra_damping = nullptr);
 
   Vec create_vector() const override;
   void start(Vec u0, Vec v0, Vec a0, Vec f0) override;

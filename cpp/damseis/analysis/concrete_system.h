@@ -22,9 +22,22 @@ public:
     linalg::to_function(u, _u);
     last = _m.update(_u, quasi_static ? 0.0 : dt);
     count(last);
+    keep_trial(u);
     return last.failed == 0;
   }
-  void internal_force(Vec f) override { _m.assemble_internal_force(f); }
+  void internal_force(Vec f) override
+  {
+    _m.assemble_internal_force(f);
+    add_supports(f);
+  }
+  /// Linear supports on the system's unknowns (the springs of a viscous-
+  /// spring boundary, in K0 too): their force K_s u joins the internal
+  /// force. K_s must outlive the system.
+  void set_supports(Mat K_s)
+  {
+    _supports = K_s;
+    _u_trial = linalg::column_vector(K_s);
+  }
   void add_tangent_change(Mat A, double scale) override
   {
     _m.add_tangent_change(A, scale);
@@ -79,7 +92,23 @@ public:
     return_map_seconds = 0.0;
   }
 
+protected:
+  /// The trial's displacement (system unknowns), kept for the supports.
+  void keep_trial(Vec u)
+  {
+    if (_supports)
+      VecCopy(u, _u_trial.vec());
+  }
+  /// f += K_s u of the last trial.
+  void add_supports(Vec f)
+  {
+    if (_supports)
+      MatMultAdd(_supports, _u_trial.vec(), f, f);
+  }
+
 private:
+  Mat _supports = nullptr;
+  dolfinx::la::petsc::Vector _u_trial{nullptr, false};
   void count(const fem::MaterialUpdateStats& s)
   {
     substepped += s.substepped;

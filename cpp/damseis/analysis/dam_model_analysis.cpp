@@ -183,7 +183,8 @@ dam_model_seismic_analysis(DamModel& model, const DamModelConfig& cfg,
     bulk.elastic[cfg.mesh->groups.at(r.group).tag] = mat;
   }
   return concrete_seismic_analysis(*model.fe, cfg.seismic, bulk,
-                                   model.loads(cfg), folder, model.tie.mat());
+                                   model.loads(cfg), folder, model.tie.mat(),
+                                   cfg.wave ? &*cfg.wave : nullptr);
 }
 
 nlohmann::json dam_model_results(MPI_Comm comm, const DamModelConfig& cfg,

@@ -65,9 +65,6 @@ void read_wave_foundation(const input::Case& c, DamModelConfig& cfg)
 {
   if (cfg.viscous_spring.empty())
     return;
-  if (cfg.concrete.kind != ConcreteModelKind::linear)
-    c.fail("supports.viscous_spring", "is not yet available with HTC concrete",
-           "material.model = \"linear\", or supports.fixed");
   if (!cfg.initial_velocity.empty())
     c.fail("supports.viscous_spring",
            "is not yet available with an initial velocity",

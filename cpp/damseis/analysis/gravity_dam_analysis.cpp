@@ -134,7 +134,7 @@ gravity_dam_seismic_analysis(GravityDamModel& model,
   return concrete_seismic_analysis(
       *model.fe, cfg.seismic,
       {cfg.concrete_model, section_materials(cfg), cfg.plane},
-      {model.static_loads()}, folder);
+      {model.static_loads()}, folder, nullptr, cfg.wave ? &*cfg.wave : nullptr);
 }
 
 nlohmann::json gravity_dam_results(MPI_Comm comm, const GravityDamConfig& cfg,

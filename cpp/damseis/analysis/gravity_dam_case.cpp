@@ -384,11 +384,11 @@ GravityDamConfig read_gravity_dam_config(const input::Case& c)
   g.rock_rho = c.real("foundation.rho");
   g.spring_factors = {c.real("foundation.spring_normal"),
                       c.real("foundation.spring_tangential")};
-  if (viscous_spring && g.concrete_model.kind != ConcreteModelKind::linear)
-    c.fail("foundation.boundary",
-           boundary + " is not yet available with HTC concrete",
+  if (g.boundary == FoundationBoundary::transmitting &&
+      g.concrete_model.kind != ConcreteModelKind::linear)
+    c.fail("foundation.boundary", "mtf is not yet available with HTC concrete",
            "material.model = \"linear\" or foundation.boundary = "
-           "\"fixed\"");
+           "\"viscous_spring\"");
   if (c.boolean("study.table6"))
   {
     if (!s.foundation)

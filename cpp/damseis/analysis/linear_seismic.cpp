@@ -10,6 +10,7 @@
 #include "run_outputs.h"
 #include "seismic_system.h"
 #include "timed_loads.h"
+#include "viscous_spring_foundation.h"
 #include <chrono>
 #include <cmath>
 #include <damseis/engine/linear_stepper.h>
@@ -188,43 +189,16 @@ void LinearSeismicAnalysis::set_up_wave_foundation(Mat K)
     throw std::invalid_argument(
         "a foundation with mass and a transmitting boundary does not yet "
         "take an initial velocity");
-  // The free field of the record, each column's ground from the rock's
-  // surface.
-  _ground = std::make_unique<geometry::GroundSurface>(
-      _fe.model(), _s.dam_regions, _wave->boundary_tags);
-  std::array<std::vector<double>, 3> outcrop;
-  for (int c = 0; c < _fe.dim(); ++c)
-    if (_s.motion[c].active)
-      outcrop[c] = _s.motion[c].acceleration;
-  _free_field =
-      make_free_field(*_wave, _fe.dim(), outcrop, _s.scheme.dt, _s.steps);
+  IncidentWaves waves = incident_waves(_fe, _s, *_wave);
+  _ground = std::move(waves.ground);
+  _free_field = std::move(waves.field);
   if (_wave->mtf)
     return set_up_transmitting();
-  if (_s.damping_frequencies_hz.empty() && _s.damping_ratio > 0.0)
-    results::warn(_comm,
-                  "rock with mass on a viscous-spring boundary: the lowest "
-                  "modes may be the rock block's on its springs, and "
-                  "damping.modes fits the Rayleigh damping to them; give "
-                  "damping.frequencies_hz (e.g. the massless model's) to "
-                  "fit it to the dam's");
-  _boundary = std::make_unique<fem::ViscousBoundary>(
-      _fe, *_fe.model().facet_tags, _wave->boundary_tags, _wave->centre,
-      _wave->factors);
-  Matrix springs(_boundary->springs(), true);
-  _dashpots = Matrix(_boundary->dashpots(), true);
-  if (_tie) // on the tied unknowns
-  {
-    springs = Matrix(fem::reduce_to_tied(springs.mat(), _tie), false);
-    _dashpots = Matrix(fem::reduce_to_tied(_dashpots.mat(), _tie), false);
-  }
-  MatAXPY(K, 1.0, springs.mat(), SUBSET_NONZERO_PATTERN);
-  results::print(_comm, "foundation with mass, viscous-spring boundary (" +
-                            std::to_string(_boundary->measure()) +
-                            (_fe.dim() == 3 ? " m2" : " m") +
-                            "), vertically incident waves: the surface "
-                            "moves with the record " +
-                            std::to_string(_free_field->surface_delay()) +
-                            " s late");
+  ViscousSpringParts vs =
+      viscous_spring_parts(_fe, _s, *_wave, *_free_field, _tie);
+  _boundary = std::move(vs.boundary);
+  _dashpots = std::move(vs.dashpots);
+  MatAXPY(K, 1.0, vs.springs.mat(), SUBSET_NONZERO_PATTERN);
 }
 
 void LinearSeismicAnalysis::set_up_transmitting()

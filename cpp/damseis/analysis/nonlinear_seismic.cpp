@@ -2,6 +2,7 @@
 #include "concrete_stepper.h"
 #include "concrete_system.h"
 #include "engine_settings.h"
+#include "free_field_load.h"
 #include "ground_motion_load.h"
 #include "initial_motion.h"
 #include "modal_stage.h"
@@ -11,6 +12,7 @@
 #include "static_stage.h"
 #include "tied_concrete_system.h"
 #include "timed_loads.h"
+#include "viscous_spring_foundation.h"
 #include <chrono>
 #include <cmath>
 #include <damseis/engine/time_history.h>
@@ -351,7 +353,8 @@ class ConcreteSeismicAnalysis : public SeismicAnalysis
 public:
   ConcreteSeismicAnalysis(fem::ElasticModel& fe, const SeismicSettings& s,
                           ConcreteBulk bulk, const ModelLoads& loads,
-                          RunFolder folder, Mat tie);
+                          RunFolder folder, Mat tie,
+                          const WaveFoundation* wave);
   void modal_stage() override;
   void static_stage() override;
   void time_history() override;
@@ -360,6 +363,12 @@ public:
 private:
   void add_recorders(engine::TimeHistory& history);
   void write_concrete_outputs(json& summary) const;
+  /// The viscous-spring boundary's springs (K0 and the system's supports),
+  /// dashpots and the record's free field.
+  void set_up_viscous_spring();
+  /// The seismic load: the free field's (wave foundation) or the base
+  /// acceleration's, the static loads held.
+  std::unique_ptr<engine::DynamicLoad> seismic_load() const;
 
   fem::ElasticModel& _fe;
   const SeismicSettings& _s;
@@ -377,6 +386,11 @@ private:
   /// Bonded joints: u = P u_r (null: none), and the full stiffness.
   Mat _tie;
   Matrix _K_full{nullptr, false};
+  /// A foundation with mass on a viscous-spring boundary (null: none).
+  const WaveFoundation* _wave;
+  IncidentWaves _waves;
+  ViscousSpringParts _vs;
+  double _free_field_seconds = 0.0;
   /// The concrete system (on the tied unknowns with ties).
   std::unique_ptr<ConcreteSystem> _system;
   /// Dead weight alone, and all static loads.
@@ -412,10 +426,12 @@ ConcreteSeismicAnalysis::ConcreteSeismicAnalysis(fem::ElasticModel& fe,
                                                  const SeismicSettings& s,
                                                  ConcreteBulk bulk,
                                                  const ModelLoads& loads,
-                                                 RunFolder folder, Mat tie)
+                                                 RunFolder folder, Mat tie,
+                                                 const WaveFoundation* wave)
     : _fe(fe), _s(s), _bulk(std::move(bulk)), _loads(loads),
       _folder(std::move(folder)), _comm(fe.mesh()->comm()),
-      _cm(fe, concrete_regions(_bulk), _bulk.elastic, _bulk.plane), _tie(tie)
+      _cm(fe, concrete_regions(_bulk), _bulk.elastic, _bulk.plane), _tie(tie),
+      _wave(wave)
 {
   results::set_stage("assembly");
   const ConcreteSettings& concrete = _bulk.concrete;
@@ -435,10 +451,29 @@ ConcreteSeismicAnalysis::ConcreteSeismicAnalysis(fem::ElasticModel& fe,
     _system = std::make_unique<TiedConcreteSystem>(_cm, tie, _K_full.mat());
   else
     _system = std::make_unique<ConcreteSystem>(_cm);
+  if (_wave)
+    set_up_viscous_spring();
   _plastic = concrete.kind != ConcreteModelKind::elastic;
   _cm.set_implex(concrete.implex && _plastic);
   if (_plastic)
     print_crack_band_notes(_comm, fe, _cm, concrete, _bulk.regions);
+}
+
+void ConcreteSeismicAnalysis::set_up_viscous_spring()
+{
+  if (_wave->mtf)
+    throw std::invalid_argument("the multi-transmitting boundary is not yet "
+                                "available with HTC concrete");
+  if (_loads.initial_velocity)
+    throw std::invalid_argument(
+        "a foundation with mass and a transmitting boundary does not yet "
+        "take an initial velocity");
+  _waves = incident_waves(_fe, _s, *_wave);
+  _vs = viscous_spring_parts(_fe, _s, *_wave, *_waves.field, _tie);
+  // The springs: in K0 (system unknowns) and, as linear supports, in the
+  // internal force of the dofs the material sees (all of them with ties).
+  MatAXPY(_K.mat(), 1.0, _vs.springs.mat(), SUBSET_NONZERO_PATTERN);
+  _system->set_supports(_tie ? _vs.boundary->springs() : _vs.springs.mat());
 }
 
 void ConcreteSeismicAnalysis::modal_stage()
@@ -495,10 +530,11 @@ void ConcreteSeismicAnalysis::time_history()
       concrete.newton.extrapolated_predictor && !concrete.implex && _plastic;
   _stepper = std::make_unique<ConcreteStepper>(
       _M.mat(), _K.mat(), _modal->damping, _s.scheme, *_system, _cm, _newton,
-      _s.factorization, _u_static.vec(), _f_int_static.vec());
-  const GroundMotionLoad ground(_fe, _s, _M.mat(), _tie, _F_static.vec());
+      _s.factorization, _u_static.vec(), _f_int_static.vec(),
+      _wave ? _vs.dashpots.mat() : nullptr);
+  const std::unique_ptr<engine::DynamicLoad> ground = seismic_load();
   // Tractions with their histories on top of the ground motion's load.
-  const LoadWithTimedTerms load(ground, _loads.timed, _tie);
+  const LoadWithTimedTerms load(*ground, _loads.timed, _tie);
 
   open_run_folder(_comm, _folder);
   _u = std::make_unique<FullDisplacement>(*_stepper, _tie);
@@ -520,6 +556,19 @@ void ConcreteSeismicAnalysis::time_history()
     initial = {nullptr, _initial.v0.vec(), _initial.a0.vec()};
   }
   _run = history.run(initial);
+  if (auto* f = dynamic_cast<const FreeFieldLoad*>(ground.get()))
+    _free_field_seconds = f->seconds();
+}
+
+std::unique_ptr<engine::DynamicLoad>
+ConcreteSeismicAnalysis::seismic_load() const
+{
+  if (_wave)
+    return std::make_unique<FreeFieldLoad>(
+        _fe, _vs.boundary.get(), *_waves.ground, _waves.field, _M.mat(),
+        _K.mat(), _modal->damping, _s.scheme.dt, _tie, _F_static.vec());
+  return std::make_unique<GroundMotionLoad>(_fe, _s, _M.mat(), _tie,
+                                            _F_static.vec());
 }
 
 void ConcreteSeismicAnalysis::add_recorders(engine::TimeHistory& history)
@@ -616,6 +665,12 @@ json ConcreteSeismicAnalysis::results()
         {"max", nt.implex_error_max},
         {"t_of_max", nt.implex_error_time}};
   }
+  if (_wave)
+  {
+    summary["foundation"] =
+        wave_foundation_summary(*_wave, *_waves.field, _vs.boundary->measure());
+    summary["foundation"]["free_field_load_seconds"] = _free_field_seconds;
+  }
   summary["wall_seconds"] = seconds_since(_wall_start);
   print_summary_line(_comm, summary,
                      ", Newton iterations per step " +
@@ -676,9 +731,10 @@ void ConcreteSeismicAnalysis::write_concrete_outputs(json& summary) const
 std::unique_ptr<SeismicAnalysis>
 concrete_seismic_analysis(fem::ElasticModel& fe, const SeismicSettings& s,
                           const ConcreteBulk& bulk, const ModelLoads& loads,
-                          const RunFolder& folder, Mat tie)
+                          const RunFolder& folder, Mat tie,
+                          const WaveFoundation* wave)
 {
   return std::make_unique<ConcreteSeismicAnalysis>(fe, s, bulk, loads, folder,
-                                                   tie);
+                                                   tie, wave);
 }
 } // namespace damseis::analysis

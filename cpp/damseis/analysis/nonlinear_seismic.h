@@ -37,16 +37,18 @@ struct ConcreteBulk
 /// the static stage (silt, uplift, body forces), the timed ones with the
 /// ground motion, and an initial velocity starts the time history. `tie`
 /// (optional) ties bonded joints, u = P u_r, as in run_linear_seismic: the
-/// Newton iteration runs on the tied unknowns (TiedConcreteSystem). Checkpoints
-/// and signals as in run_linear_seismic. Collective.
+/// Newton iteration runs on the tied unknowns (TiedConcreteSystem). `wave`
+/// (optional): a foundation with mass on a viscous-spring boundary (its
+/// springs linear supports of the concrete system and in K0, its dashpots
+/// extra damping, the free field's load on top of the static loads).
+/// Checkpoints and signals as in run_linear_seismic. Collective.
 ///
 /// Throws dynamics::StepFailure if a step cannot be solved (the outputs
 /// written so far stay; no unconverged step is accepted).
-std::unique_ptr<SeismicAnalysis>
-concrete_seismic_analysis(fem::ElasticModel& fe,
-                          const SeismicSettings& settings,
-                          const ConcreteBulk& bulk, const ModelLoads& loads,
-                          const RunFolder& folder, Mat tie = nullptr);
+std::unique_ptr<SeismicAnalysis> concrete_seismic_analysis(
+    fem::ElasticModel& fe, const SeismicSettings& settings,
+    const ConcreteBulk& bulk, const ModelLoads& loads, const RunFolder& folder,
+    Mat tie = nullptr, const WaveFoundation* wave = nullptr);
 
 /// All phases of that analysis; returns the summary.
 inline nlohmann::json

@@ -261,9 +261,10 @@ StepReport solve_static(NonlinearSystem& system, Mat K0, Vec F_from, Vec F_to,
 NonlinearNewmark::NonlinearNewmark(Mat M, Mat K0, RayleighDamping damping,
                                    TimeScheme scheme, NonlinearSystem& system,
                                    NewtonSettings settings,
-                                   linalg::Factorization factorization)
-    : _M(M), _K0(K0), _damping(damping), _scheme(scheme), _system(system),
-      _settings(settings), _factorization(factorization)
+                                   linalg::Factorization factorization,
+                                   Mat extra_damping)
+    : _M(M), _K0(K0), _Ce(extra_damping), _damping(damping), _scheme(scheme),
+      _system(system), _settings(settings), _factorization(factorization)
 {
   if (!(scheme.dt > 0.0 && std::isfinite(scheme.dt)))
     throw std::invalid_argument("time step must be positive");
@@ -321,6 +322,8 @@ const linalg::DirectSolver& NonlinearNewmark::initial_solver(int level,
   Mat J0 = linalg::duplicate_matrix(_K0, MAT_COPY_VALUES);
   MatScale(J0, w * (1.0 + a1 * _damping.b_stiffness));
   MatAXPY(J0, a0 + w * a1 * _damping.a_mass, _M, SUBSET_NONZERO_PATTERN);
+  if (_Ce)
+    MatAXPY(J0, w * a1, _Ce, SUBSET_NONZERO_PATTERN);
   MPI_Comm comm;
   PetscObjectGetComm(reinterpret_cast<PetscObject>(_K0), &comm);
   auto solver = std::make_unique<linalg::DirectSolver>(comm, _factorization);
@@ -396,13 +399,19 @@ bool NonlinearNewmark::solve_step(double dt, Vec f_next, int level,
     _J = linalg::duplicate_matrix(_K0, MAT_DO_NOT_COPY_VALUES);
 
   // Constant part of the HHT residual:
-  // g = -alpha (C v + f_int) - (1 + alpha) f' + alpha f.
+  // g = -alpha (C v + f_int) - (1 + alpha) f' + alpha f (C with C_e).
   VecCopy(_v, _tmp);
   VecScale(_tmp, -alpha * aM);
   MatMult(_M, _tmp, _g);
   VecCopy(_v, _tmp);
   VecScale(_tmp, -alpha * bK);
   MatMultAdd(_K0, _tmp, _g, _g);
+  if (_Ce)
+  {
+    VecCopy(_v, _tmp);
+    VecScale(_tmp, -alpha);
+    MatMultAdd(_Ce, _tmp, _g, _g);
+  }
   {
     const PetscScalar c[3] = {-alpha, -w, alpha};
     Vec x[3] = {_fint, f_next, _f};
@@ -410,7 +419,7 @@ bool NonlinearNewmark::solve_step(double dt, Vec f_next, int level,
   }
   const double reference = std::max(norm(f_next), 1e-300);
 
-  // R(u') = M (a' + w aM v') + K0 (w bK v') + w f_int(u') + g, with
+  // R(u') = M (a' + w aM v') + (w bK K0 + w C_e) v' + w f_int(u') + g, with
   // a' = a0 (u' - u) - a2 v - a3 a and v' = v + dt ((1 - gamma) a + gamma a').
   auto kinematics = [&](Vec ut)
   {
@@ -433,6 +442,12 @@ bool NonlinearNewmark::solve_step(double dt, Vec f_next, int level,
     VecCopy(_vt, _w2);
     VecScale(_w2, w * bK);
     MatMultAdd(_K0, _w2, R, R);
+    if (_Ce)
+    {
+      VecCopy(_vt, _w2);
+      VecScale(_w2, w);
+      MatMultAdd(_Ce, _w2, R, R);
+    }
     VecAXPY(R, w, _fint_t);
     VecAXPY(R, 1.0, _g);
     return true;

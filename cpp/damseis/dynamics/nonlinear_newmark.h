@@ -1,5 +1,6 @@
 // Implicit time integration of nonlinear structural dynamics,
-//   M a + C v + f_int(u) = f(t),   C = a_M M + b_K K0 (Rayleigh, initial K0),
+//   M a + C v + f_int(u) = f(t),   C = a_M M + b_K K0 (Rayleigh, initial K0)
+//   + C_e (boundary dashpots),
 // by the HHT-alpha method with a Newton iteration per step (algorithms.md
 // 6.1-6.2), and the quasi-static solution of f_int(u) = F in load
 // increments (the static stage, 6.4).
@@ -138,10 +139,13 @@ StepReport solve_static(NonlinearSystem& system, Mat K0, Vec F_from, Vec F_to,
 class NonlinearNewmark
 {
 public:
-  /// M, K0 must stay alive while the integrator is used.
+  /// M, K0 (and `extra_damping`) must stay alive while the integrator is
+  /// used. `extra_damping`: a damping matrix added to the Rayleigh damping
+  /// (boundary dashpots; its pattern within K0's), or null.
   NonlinearNewmark(Mat M, Mat K0, RayleighDamping damping, TimeScheme scheme,
                    NonlinearSystem& system, NewtonSettings settings,
-                   linalg::Factorization factorization);
+                   linalg::Factorization factorization,
+                   Mat extra_damping = nullptr);
   ~NonlinearNewmark();
   NonlinearNewmark(const NonlinearNewmark&) = delete;
   NonlinearNewmark& operator=(const NonlinearNewmark&) = delete;
@@ -171,6 +175,7 @@ private:
   const linalg::DirectSolver& initial_solver(int level, StepReport& report);
 
   Mat _M, _K0;
+  Mat _Ce = nullptr; ///< extra damping (not owned), or null
   RayleighDamping _damping;
   TimeScheme _scheme;
   NonlinearSystem& _system;
