@@ -1,5 +1,6 @@
 #include "arch_dam_analysis.h"
 #include "linear_seismic.h"
+#include "nonlinear_seismic.h"
 #include "run_outputs.h"
 #include <cstdio>
 #include <cstdlib>
@@ -25,10 +26,14 @@ ArchDamModel arch_dam_model(MPI_Comm comm, const ArchDamConfig& cfg)
                 std::to_string(arch.num_dam_cells) + " in the dam), " +
                 std::to_string(arch.joints.size()) + " joints, built in " +
                 std::to_string(arch.total_seconds) + " s");
-  m.fe = std::make_unique<fem::ElasticModel>(
-      arch.model, cfg.order,
-      std::map<int, fem::Material>{{tags::dam, cfg.concrete},
-                                   {tags::foundation, cfg.rock}});
+  // The dam's E is that of its concrete model (the rate-independent
+  // models' +30% convention; the linear engine's too).
+  fem::Material dam = cfg.concrete;
+  dam.E = cfg.concrete_model.params.E;
+  m.concrete = cfg.concrete_model;
+  m.materials = {{tags::dam, dam}, {tags::foundation, cfg.rock}};
+  m.fe =
+      std::make_unique<fem::ElasticModel>(arch.model, cfg.order, m.materials);
   // A massless foundation is fixed on its far boundaries; rock with mass
   // is held there by the viscous-spring boundary.
   if (!cfg.wave)
@@ -79,6 +84,14 @@ ArchDamModel arch_dam_model(MPI_Comm comm, const ArchDamConfig& cfg)
 std::unique_ptr<SeismicAnalysis>
 arch_dam_seismic_analysis(ArchDamModel& model, const RunFolder& folder)
 {
+  if (model.concrete.kind != ConcreteModelKind::linear)
+    return concrete_seismic_analysis(*model.fe, model.seismic,
+                                     {model.concrete,
+                                      model.materials,
+                                      fem::PlaneMode::plane_strain,
+                                      {tags::dam}},
+                                     {}, folder, model.tie.mat(),
+                                     model.wave ? &*model.wave : nullptr);
   return linear_seismic_analysis(*model.fe, model.seismic, {}, folder,
                                  model.tie.mat(),
                                  model.contact ? &*model.contact : nullptr,
@@ -91,8 +104,12 @@ nlohmann::json arch_dam_results(MPI_Comm comm, const ArchDamConfig& cfg,
                                 const std::filesystem::path& out_dir)
 {
   const auto& arch = model.mesh;
+  const auto kind = cfg.concrete_model.kind;
   summary["analysis"] =
-      std::string("arch dam, linear elastic, ") +
+      std::string("arch dam, ") +
+      (kind == ConcreteModelKind::linear
+           ? std::string("linear elastic, ")
+           : "HTC concrete (" + to_string(kind) + "), ") +
       (cfg.wave ? "foundation with mass, viscous-spring boundary"
                 : "massless foundation") +
       (model.contact ? ", contact joints" : "");

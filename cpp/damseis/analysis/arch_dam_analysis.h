@@ -1,6 +1,6 @@
-// The seismic analysis of a 3D arch dam on a massless foundation (demo
-// `arch_dam`), in the pieces its main.cpp composes: the model, the linear
-// analysis with bonded or contact joints, the results.
+// The seismic analysis of a 3D arch dam (demo `arch_dam`), in the pieces
+// its main.cpp composes: the model, the analysis (linear with bonded or
+// contact joints, or HTC concrete with bonded joints), the results.
 #pragma once
 
 #include "arch_dam_case.h"
@@ -31,12 +31,17 @@ struct ArchDamModel
   /// foundation.boundary = "viscous_spring": rock with mass, wave input.
   std::optional<WaveFoundation> wave;
   SeismicSettings seismic;
+  /// The dam's concrete (material.model) and the elastic materials per
+  /// region (the dam's E that of its model, with its dynamic factor).
+  ConcreteSettings concrete;
+  std::map<int, fem::Material> materials;
 };
 
 /// Prints the size estimate, meshes (gmsh, rank 0) and builds the model.
 ArchDamModel arch_dam_model(MPI_Comm comm, const ArchDamConfig& cfg);
 
-/// The linear analysis of the model (joints bonded, or in contact).
+/// The analysis of the model: linear (joints bonded, or in contact), or
+/// with HTC concrete in the dam (bonded joints).
 std::unique_ptr<SeismicAnalysis>
 arch_dam_seismic_analysis(ArchDamModel& model, const RunFolder& folder);
 

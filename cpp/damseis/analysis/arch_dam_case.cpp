@@ -28,6 +28,7 @@ input::Schema arch_dam_schema()
       .between_exclusive(-1, 0.5);
   s.real("material.rho", "2400", "kg/m3", "mass density of the dam concrete")
       .between(100, 20000);
+  add_concrete_keys(s);
   s.real("rock.E", "28.6e9", "Pa", "Young's modulus of the foundation rock")
       .between(1e7, 2e11);
   s.real("rock.nu", "0.25", "-", "Poisson's ratio of the foundation rock")
@@ -181,6 +182,7 @@ ArchDamConfig read_arch_dam_config(const input::Case& c)
   a.order = static_cast<int>(c.integer("mesh.order"));
   a.concrete = {c.real("material.E"), c.real("material.nu"),
                 c.real("material.rho")};
+  a.concrete_model = read_concrete_settings(c, a.concrete.E, a.concrete.nu);
   a.rock = {c.real("rock.E"), c.real("rock.nu"), 0.0};
   const geometry::ArchDamGeometry shape(a.geometry);
   const double h = shape.height();
@@ -208,6 +210,13 @@ ArchDamConfig read_arch_dam_config(const input::Case& c)
                      {"downstream", {tags::downstream_face}}};
   read_joint_contact(c, a);
   read_joint_study(c, a);
+  if (a.joints == JointModel::contact &&
+      a.concrete_model.kind != ConcreteModelKind::linear)
+    c.fail("joints.model",
+           "contact is not yet available with HTC concrete (material.model "
+           "= \"" +
+               to_string(a.concrete_model.kind) + "\")",
+           "joints.model = \"bonded\", or material.model = \"linear\"");
   a.rock_rho = c.real("rock.rho");
   a.spring_factors = {c.real("foundation.spring_normal"),
                       c.real("foundation.spring_tangential")};

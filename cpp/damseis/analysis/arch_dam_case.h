@@ -3,6 +3,8 @@
 // keys; their reading into a validated configuration (SI units).
 #pragma once
 
+#include "concrete_settings.h"
+
 #include "seismic_settings.h"
 #include "wave_foundation.h"
 #include <damseis/fem/elastic_model.h>
@@ -26,7 +28,10 @@ struct ArchDamConfig
 {
   geometry::ArchDamDefinition geometry;
   int order = 2;
-  fem::Material concrete;
+  fem::Material concrete; ///< the static elastic constants of the dam
+  /// material.model: the linear engine, or HTC concrete (elastic, plastic,
+  /// viscoplastic) with its parameters and dynamic factors.
+  ConcreteSettings concrete_model;
   fem::Material rock; ///< massless foundation (rho = 0), or with mass
   /// Rock with mass and a viscous-spring boundary, the ground motion as
   /// vertically incident waves; none: massless, fixed far faces.
