@@ -97,6 +97,113 @@ void throw_if_any(MPI_Comm comm, const std::string& message)
   MPI_Bcast(text.data(), length, MPI_CHAR, first, comm);
   throw std::invalid_argument(text);
 }
+
+/// The owned nodes of V on the facets tagged `tags`, with the outward
+/// normal of one of their facets: a bottom facet's (normal down) where
+/// there is one (corners belong to the bottom).
+std::map<std::int32_t, MtfBoundary::Node>
+boundary_nodes(const dolfinx::fem::FunctionSpace& V,
+               const dolfinx::mesh::MeshTags<std::int32_t>& facets,
+               const std::vector<int>& tags)
+{
+  const auto& mesh = *V.mesh();
+  const auto& dofmap = *V.dofmap();
+  const std::int32_t owned = dofmap.index_map->size_local();
+  const std::vector<double> x = V.tabulate_dof_coordinates(false);
+  const int tdim = mesh.topology().dim(), fdim = tdim - 1;
+  auto& topology = mesh.topology_mutable();
+  topology.create_connectivity(fdim, tdim);
+  topology.create_connectivity(tdim, fdim);
+  auto f_to_c = topology.connectivity(fdim, tdim);
+  auto c_to_f = topology.connectivity(tdim, fdim);
+  const auto& layout = dofmap.element_dof_layout();
+  std::map<std::int32_t, MtfBoundary::Node> nodes;
+  for (std::size_t i = 0; i < facets.indices().size(); ++i)
+  {
+    if (std::find(tags.begin(), tags.end(), facets.values()[i]) == tags.end())
+      continue;
+    const std::int32_t f = facets.indices()[i];
+    const std::int32_t c = f_to_c->links(f)[0];
+    auto cf = c_to_f->links(c);
+    const int local = static_cast<int>(
+        std::distance(cf.begin(), std::find(cf.begin(), cf.end(), f)));
+    const Point n = outward_normal(mesh, f, c);
+    const bool bottom = n[tdim - 1] < -0.9;
+    auto cell_dofs = dofmap.cell_dofs(c);
+    for (int ld : layout.entity_closure_dofs(fdim, local))
+    {
+      const std::int32_t b = cell_dofs[ld];
+      if (b >= owned)
+        continue;
+      const MtfBoundary::Node node{
+          {x[3 * b], x[3 * b + 1], x[3 * b + 2]}, n, bottom};
+      auto [it, inserted] = nodes.try_emplace(b, node);
+      if (!inserted && bottom && !it->second.bottom)
+        it->second = node;
+    }
+  }
+  return nodes;
+}
+
+/// The band's nodes of every rank (global blocks and coordinates) in a
+/// grid of cells of size dx, found by their coordinates.
+struct BandNodes
+{
+  BandNodes(const dolfinx::fem::FunctionSpace& V,
+            const std::vector<std::int32_t>& cells, double dx)
+      : dx(dx)
+  {
+    const auto& dofmap = *V.dofmap();
+    const std::int32_t owned = dofmap.index_map->size_local();
+    const std::int64_t first = dofmap.index_map->local_range()[0];
+    const std::vector<double> X = V.tabulate_dof_coordinates(false);
+    std::vector<std::int8_t> in_band(owned, 0);
+    for (std::int32_t c : cells)
+      for (std::int32_t b : dofmap.cell_dofs(c))
+        if (b < owned)
+          in_band[b] = 1;
+    for (std::int32_t b = 0; b < owned; ++b)
+      if (in_band[b])
+      {
+        blocks.push_back(first + b);
+        x.insert(x.end(), X.begin() + 3 * b, X.begin() + 3 * b + 3);
+      }
+    const MPI_Comm comm = V.mesh()->comm();
+    blocks = linalg::all_gather(comm, blocks);
+    x = linalg::all_gather(comm, x);
+    for (std::size_t i = 0; i < blocks.size(); ++i)
+      grid[key({x[3 * i], x[3 * i + 1], x[3 * i + 2]})].push_back(
+          static_cast<std::int32_t>(i));
+  }
+  /// The index of the node at p (within 1e-6 dx), or -1.
+  std::int32_t find(const Point& p) const
+  {
+    const auto k = key(p);
+    for (std::int64_t i = -1; i <= 1; ++i)
+      for (std::int64_t j = -1; j <= 1; ++j)
+        for (std::int64_t l = -1; l <= 1; ++l)
+        {
+          auto it = grid.find({k[0] + i, k[1] + j, k[2] + l});
+          if (it == grid.end())
+            continue;
+          for (std::int32_t q : it->second)
+            if (std::hypot(x[3 * q] - p[0], x[3 * q + 1] - p[1],
+                           x[3 * q + 2] - p[2]) < 1e-6 * dx)
+              return q;
+        }
+    return -1;
+  }
+  std::array<std::int64_t, 3> key(const Point& p) const
+  {
+    return {static_cast<std::int64_t>(std::floor(p[0] / dx)),
+            static_cast<std::int64_t>(std::floor(p[1] / dx)),
+            static_cast<std::int64_t>(std::floor(p[2] / dx))};
+  }
+  double dx;
+  std::vector<std::int64_t> blocks;
+  std::vector<double> x;
+  std::map<std::array<std::int64_t, 3>, std::vector<std::int32_t>> grid;
+};
 } // namespace
 
 MtfBoundary::MtfBoundary(const dolfinx::fem::FunctionSpace& V,
@@ -126,100 +233,14 @@ MtfBoundary::MtfBoundary(const dolfinx::fem::FunctionSpace& V,
       << " s, dx " << s.spacing << " m): a smaller time step";
     throw std::invalid_argument(m.str());
   }
-  const auto& dofmap = *V.dofmap();
-  const auto& map = *dofmap.index_map;
-  _dim = dofmap.index_map_bs();
-  const std::int32_t owned = map.size_local();
+  const auto& map = *V.dofmap()->index_map;
+  _dim = V.dofmap()->index_map_bs();
   const std::int64_t first_block = map.local_range()[0];
-  const std::vector<double> x = V.tabulate_dof_coordinates(false);
-  auto point = [&](std::int32_t b) -> Point {
-    return {x[3 * b], x[3 * b + 1], x[3 * b + 2]};
-  };
-
-  // The boundary nodes and their normals (the bottom's first).
-  const int tdim = mesh.topology().dim(), fdim = tdim - 1;
-  auto& topology = mesh.topology_mutable();
-  topology.create_connectivity(fdim, tdim);
-  topology.create_connectivity(tdim, fdim);
-  auto f_to_c = topology.connectivity(fdim, tdim);
-  auto c_to_f = topology.connectivity(tdim, fdim);
-  const auto& layout = dofmap.element_dof_layout();
-  std::map<std::int32_t, Node> nodes;
-  for (std::size_t i = 0; i < facets.indices().size(); ++i)
-  {
-    if (std::find(boundary_tags.begin(), boundary_tags.end(),
-                  facets.values()[i]) == boundary_tags.end())
-      continue;
-    const std::int32_t f = facets.indices()[i];
-    const std::int32_t c = f_to_c->links(f)[0];
-    auto cf = c_to_f->links(c);
-    const int local = static_cast<int>(
-        std::distance(cf.begin(), std::find(cf.begin(), cf.end(), f)));
-    const Point n = outward_normal(mesh, f, c);
-    const bool bottom = n[tdim - 1] < -0.9;
-    auto cell_dofs = dofmap.cell_dofs(c);
-    for (int ld : layout.entity_closure_dofs(fdim, local))
-    {
-      const std::int32_t b = cell_dofs[ld];
-      if (b >= owned)
-        continue;
-      auto [it, inserted] = nodes.try_emplace(b, Node{point(b), n, bottom});
-      if (!inserted && bottom && !it->second.bottom)
-        it->second = Node{point(b), n, true};
-    }
-  }
-
-  // The band's nodes, on every rank: global block and coordinates, in a
-  // grid of cells of size dx.
-  std::vector<std::int8_t> in_band(owned, 0);
-  for (std::int32_t c : band_cells)
-    for (std::int32_t b : dofmap.cell_dofs(c))
-      if (b < owned)
-        in_band[b] = 1;
-  std::vector<std::int64_t> band_blocks;
-  std::vector<double> band_x;
-  for (std::int32_t b = 0; b < owned; ++b)
-    if (in_band[b])
-    {
-      band_blocks.push_back(first_block + b);
-      const Point p = point(b);
-      band_x.insert(band_x.end(), p.begin(), p.end());
-    }
-  band_blocks = linalg::all_gather(comm, band_blocks);
-  band_x = linalg::all_gather(comm, band_x);
-  const double dx = s.spacing, tol = 1e-6 * dx;
-  auto key = [dx](const Point& p)
-  {
-    return std::array<std::int64_t, 3>{
-        static_cast<std::int64_t>(std::floor(p[0] / dx)),
-        static_cast<std::int64_t>(std::floor(p[1] / dx)),
-        static_cast<std::int64_t>(std::floor(p[2] / dx))};
-  };
-  std::map<std::array<std::int64_t, 3>, std::vector<std::int32_t>> grid;
-  for (std::size_t i = 0; i < band_blocks.size(); ++i)
-    grid[key({band_x[3 * i], band_x[3 * i + 1], band_x[3 * i + 2]})].push_back(
-        static_cast<std::int32_t>(i));
-  auto find = [&](const Point& p) -> std::int32_t
-  {
-    const auto k = key(p);
-    for (std::int64_t i = -1; i <= 1; ++i)
-      for (std::int64_t j = -1; j <= 1; ++j)
-        for (std::int64_t l = -1; l <= 1; ++l)
-        {
-          auto it = grid.find({k[0] + i, k[1] + j, k[2] + l});
-          if (it == grid.end())
-            continue;
-          for (std::int32_t q : it->second)
-          {
-            const double d =
-                std::hypot(band_x[3 * q] - p[0], band_x[3 * q + 1] - p[1],
-                           band_x[3 * q + 2] - p[2]);
-            if (d < tol)
-              return q;
-          }
-        }
-    return -1;
-  };
+  const int tdim = mesh.topology().dim();
+  const double dx = s.spacing;
+  const std::map<std::int32_t, Node> nodes =
+      boundary_nodes(V, facets, boundary_tags);
+  const BandNodes band(V, band_cells, s.spacing);
 
   // The stencils, and the blocks they gather.
   const int width = _normal.stencil();
@@ -239,7 +260,7 @@ MtfBoundary::MtfBoundary(const dolfinx::fem::FunctionSpace& V,
       Point p = node.x;
       for (int j = 0; j < 3; ++j)
         p[j] -= k * dx * nu[j];
-      const std::int32_t q = find(p);
+      const std::int32_t q = band.find(p);
       if (q < 0)
       {
         missing = "the foundation has no structured band for the "
@@ -255,7 +276,7 @@ MtfBoundary::MtfBoundary(const dolfinx::fem::FunctionSpace& V,
           position.try_emplace(q, static_cast<std::int32_t>(position.size()));
       if (inserted)
         for (int c = 0; c < _dim; ++c)
-          gathered.push_back(band_blocks[q] * _dim + c);
+          gathered.push_back(band.blocks[q] * _dim + c);
       _stencil.push_back(it->second);
     }
     _nodes.push_back({node.x, nu, node.bottom});

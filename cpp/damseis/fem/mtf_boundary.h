@@ -72,12 +72,15 @@ public:
   std::array<std::int64_t, 2> node_counts() const { return _counts; }
   const MtfSettings& settings() const { return _s; }
 
-private:
+  /// A boundary node: its coordinates, the outward normal its stencil
+  /// marches against, whether it is on the bottom.
   struct Node
   {
     std::array<double, 3> x, normal;
     bool bottom;
   };
+
+private:
   /// The formula for the normal and for the tangential part.
   boundary::MultiTransmittingFormula _normal, _tangential;
   MtfSettings _s;
