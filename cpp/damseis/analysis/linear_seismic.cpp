@@ -10,25 +10,22 @@
 #include "run_outputs.h"
 #include "seismic_system.h"
 #include "timed_loads.h"
+#include "transmitting_foundation.h"
 #include "viscous_spring_foundation.h"
 #include <chrono>
 #include <cmath>
 #include <damseis/engine/linear_stepper.h>
-#include <damseis/engine/partitioned_stepper.h>
 #include <damseis/engine/time_history.h>
 #include <damseis/fem/facet_dofs.h>
-#include <damseis/fem/mtf_boundary.h>
 #include <damseis/fem/prolongation.h>
 #include <damseis/fem/tied_dofs.h>
 #include <damseis/fem/viscous_boundary.h>
 #include <damseis/geometry/ground_surface.h>
 #include <damseis/geometry/tags.h>
-#include <damseis/input/case.h>
 #include <damseis/joint/contact_stepper.h>
 #include <damseis/joint/joint_recorder.h>
 #include <damseis/joint/joint_surfaces.h>
 #include <damseis/linalg/all_gather.h>
-#include <damseis/linalg/duplicate_matrix.h>
 #include <damseis/linalg/modal.h>
 #include <damseis/linalg/petsc_vectors.h>
 #include <damseis/results/face_points.h>
@@ -82,13 +79,7 @@ private:
   /// A wave foundation: the boundary's springs into K, its dashpots kept
   /// for the damping, the free field of the ground motion.
   void set_up_wave_foundation(Mat K);
-  /// A transmitting foundation: the partitioned operators of the band
-  /// (explicit) and the rest (implicit), the formula on the boundary.
-  void set_up_transmitting();
-  /// The time history's stepper: the partition's, after checking the
-  /// time step against the explicit band's stable step (input::InputError
-  /// above it).
-  std::unique_ptr<engine::Stepper> transmitting_stepper();
+
   /// The seismic load: the free field's (wave foundation) or the base
   /// acceleration's, with `sustained` held.
   std::unique_ptr<engine::DynamicLoad> seismic_load(Vec sustained) const;
@@ -104,14 +95,8 @@ private:
   const ContactJoints* _contact; ///< null: no contact joints
   const WaveFoundation* _wave;   ///< null: massless foundation
   std::unique_ptr<fem::ViscousBoundary> _boundary;
-  /// A transmitting foundation: the formula, the partition's operators
-  /// (K and M on all dofs without supports, K of the implicit cells, the
-  /// band's lumped mass) and the band's stable step.
-  std::shared_ptr<fem::MtfBoundary> _mtf;
-  Matrix _K_all{nullptr, false}, _K_implicit{nullptr, false},
-      _M_partitioned{nullptr, false};
-  Vector _band_mass{nullptr, false};
-  double _omega_band = 0.0, _stable_dt = 0.0;
+  /// A multi-transmitting boundary (null: none).
+  std::unique_ptr<TransmittingFoundation> _mtf;
   std::unique_ptr<geometry::GroundSurface> _ground;
   Matrix _dashpots{nullptr, false};
   std::shared_ptr<const boundary::FreeField> _free_field;
@@ -193,7 +178,14 @@ void LinearSeismicAnalysis::set_up_wave_foundation(Mat K)
   _ground = std::move(waves.ground);
   _free_field = std::move(waves.field);
   if (_wave->mtf)
-    return set_up_transmitting();
+  {
+    if (_tie || _contact)
+      throw std::invalid_argument("a multi-transmitting boundary does not "
+                                  "yet take joints");
+    _mtf = std::make_unique<TransmittingFoundation>(
+        _fe, *_wave, _added, _free_field, *_ground, _s.scheme.dt);
+    return;
+  }
   ViscousSpringParts vs =
       viscous_spring_parts(_fe, _s, *_wave, *_free_field, _tie);
   _boundary = std::move(vs.boundary);
@@ -201,91 +193,11 @@ void LinearSeismicAnalysis::set_up_wave_foundation(Mat K)
   MatAXPY(K, 1.0, vs.springs.mat(), SUBSET_NONZERO_PATTERN);
 }
 
-void LinearSeismicAnalysis::set_up_transmitting()
-{
-  if (_tie || _contact)
-    throw std::invalid_argument("a multi-transmitting boundary does not yet "
-                                "take joints");
-  const Transmitting& t = *_wave->mtf;
-  // The band's cells are the explicit group.
-  std::vector<std::int32_t> band;
-  const auto& cell_tags = *_fe.model().cell_tags;
-  for (std::size_t i = 0; i < cell_tags.indices().size(); ++i)
-    if (cell_tags.values()[i] == t.band_region)
-      band.push_back(cell_tags.indices()[i]);
-  fem::ElasticModel::Partitioned p =
-      _fe.assemble_partitioned({t.band_region}, _added);
-  _K_all = Matrix(p.K, false);
-  _K_implicit = Matrix(p.K_implicit, false);
-  _M_partitioned = Matrix(p.M, false);
-  _band_mass = Vector(p.M_explicit, false);
-  const double dt = _s.scheme.dt;
-  fem::MtfSettings m;
-  m.order = t.order;
-  m.drift = t.drift;
-  m.spacing = t.spacing;
-  m.speed_normal = _wave->rock.cp();
-  m.speed_tangential = _wave->rock.cs();
-  m.dt = dt;
-  _mtf = std::make_shared<fem::MtfBoundary>(
-      *_fe.V(), *_fe.model().facet_tags, _wave->boundary_tags, band, m,
-      separated_field(_free_field, *_ground, dt));
-  // The band's highest frequency (its stiffness alone, its lumped mass).
-  Matrix K_band(linalg::duplicate_matrix(_K_all.mat(), MAT_COPY_VALUES), false);
-  MatAXPY(K_band.mat(), -1.0, _K_implicit.mat(), SAME_NONZERO_PATTERN);
-  _omega_band = dynamics::highest_explicit_frequency(
-      K_band.mat(), _band_mass.vec(), _mtf->rows());
-  const auto nodes = _mtf->node_counts();
-  std::ostringstream line;
-  line << "foundation with mass, multi-transmitting boundary (order " << t.order
-       << ", drift " << t.drift << ", s = c_p dt / dx = " << m.courant() << ", "
-       << nodes[0] << " nodes, " << nodes[1]
-       << " on the bottom), the band explicit (highest frequency "
-       << _omega_band / (2.0 * std::numbers::pi)
-       << " Hz), vertically incident waves: the surface moves with the "
-          "record "
-       << _free_field->surface_delay() << " s late";
-  results::print(_comm, line.str());
-}
-
-std::unique_ptr<engine::Stepper> LinearSeismicAnalysis::transmitting_stepper()
-{
-  // 2 % above the power iteration's estimate (it approaches the highest
-  // frequency from below).
-  // (The band takes the mass-proportional damping alone, implicitly.)
-  _stable_dt = dynamics::explicit_stable_step(1.02 * _omega_band,
-                                              {_modal->damping.a_mass, 0.0});
-  std::ostringstream line;
-  line << "explicit band: stable time step " << _stable_dt
-       << " s (Hughes-Liu partition); time.dt = " << _s.scheme.dt << " s";
-  results::print(_comm, line.str());
-  if (_s.scheme.dt > _stable_dt)
-  {
-    std::ostringstream m;
-    m << "time.dt = " << _s.scheme.dt
-      << " s is above the stable step of the transmitting boundary's "
-         "explicit band, "
-      << _stable_dt
-      << " s: a smaller time.dt (or a coarser "
-         "foundation.band_size)";
-    throw input::InputError(m.str());
-  }
-  if (_s.scheme.alpha != 0.0)
-    throw input::InputError("time.hht_alpha must be 0 with a multi-"
-                            "transmitting boundary (the partition is "
-                            "Newmark's average acceleration)");
-  return std::make_unique<engine::PartitionedStepper>(
-      _M_partitioned.mat(), _K_all.mat(), _K_implicit.mat(), _modal->damping,
-      _s.scheme.dt, _s.factorization, _mtf);
-}
-
 std::unique_ptr<engine::DynamicLoad>
 LinearSeismicAnalysis::seismic_load(Vec sustained) const
 {
-  if (_mtf) // the damping's term alone, C = a_M M + b_K K_I
-    return std::make_unique<FreeFieldLoad>(
-        _fe, nullptr, *_ground, _free_field, _M_partitioned.mat(),
-        _K_implicit.mat(), _modal->damping, _s.scheme.dt, _tie, sustained);
+  if (_mtf)
+    return _mtf->load(_modal->damping, _s.scheme.dt);
   if (_wave)
     return std::make_unique<FreeFieldLoad>(
         _fe, _boundary.get(), *_ground, _free_field, _M.mat(), _K.mat(),
@@ -422,7 +334,7 @@ void LinearSeismicAnalysis::time_history()
     _stepper = std::move(stepper);
   }
   else if (_mtf)
-    _stepper = transmitting_stepper();
+    _stepper = _mtf->stepper(_modal->damping, _s.scheme, _s.factorization);
   else
   {
     std::vector<Mat> dashpots;
@@ -704,21 +616,11 @@ json LinearSeismicAnalysis::results()
     summary["foundation"]["free_field_load_seconds"] = _free_field_seconds;
     if (_mtf)
     {
-      const auto nodes = _mtf->node_counts();
       summary["foundation"]["model"] =
           "mass, multi-transmitting boundary (Liao), explicit band (Hughes-"
           "Liu partition), " +
           _free_field->description();
-      summary["foundation"]["mtf"] = {
-          {"order", _wave->mtf->order},
-          {"drift", _wave->mtf->drift},
-          {"spacing_m", _wave->mtf->spacing},
-          {"artificial_speeds_m_s", {_wave->rock.cp(), _wave->rock.cs()}},
-          {"courant_s", _mtf->settings().courant()},
-          {"boundary_nodes", nodes[0]},
-          {"bottom_nodes", nodes[1]},
-          {"band_highest_frequency_hz", _omega_band / (2.0 * std::numbers::pi)},
-          {"stable_dt_s", _stable_dt}};
+      summary["foundation"]["mtf"] = _mtf->summary();
       summary["foundation"].erase("spring_factors");
       summary["foundation"].erase("boundary_measure");
       summary["foundation"].erase("boundary_measure_unit");
