@@ -199,6 +199,10 @@ TEST(PartitionedNewmark, HighestExplicitFrequencyOfTheBar)
   const double w = damseis::dynamics::highest_explicit_frequency(K_e, D, {});
   EXPECT_GT(w, 1.98);
   EXPECT_LE(w, 2.0 + 1e-12);
+  // Without explicit unknowns (no lumped mass): 0, and no step limit.
+  VecSet(D, 0.0);
+  EXPECT_EQ(damseis::dynamics::highest_explicit_frequency(K_e, D, {}), 0.0);
+  EXPECT_TRUE(std::isinf(damseis::dynamics::explicit_stable_step(0.0, {})));
   MatDestroy(&K_e);
   VecDestroy(&D);
 }

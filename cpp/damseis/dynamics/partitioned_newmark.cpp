@@ -2,6 +2,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace damseis::dynamics
@@ -44,6 +45,8 @@ bool stable(double omega_max, double dt, RayleighDamping c)
 
 double explicit_stable_step(double omega_max, RayleighDamping damping)
 {
+  if (omega_max == 0.0) // no explicit group
+    return std::numeric_limits<double>::infinity();
   if (!(omega_max > 0.0 && std::isfinite(omega_max)))
     throw std::invalid_argument("explicit_stable_step: omega_max must be "
                                 "positive");
@@ -109,6 +112,11 @@ double highest_explicit_frequency(Mat K_explicit, Vec lumped,
     VecPointwiseMult(y, y, mask);
     VecPointwiseMult(x, x, x); // x.D x (x is replaced below)
     VecDot(x, lumped, &xDx);
+    if (!(xDx > 0.0)) // no explicit unknown: nothing limits the step
+    {
+      lambda = 0.0;
+      break;
+    }
     const double next = xKx / xDx;
     double norm = 0.0;
     VecNormalize(y, &norm);

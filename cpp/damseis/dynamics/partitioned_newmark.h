@@ -51,7 +51,8 @@ public:
 /// omega_max [rad/s]: the
 /// largest dt with spectral radius <= 1 of the one-degree-of-freedom
 /// amplification matrix at every omega in (0, omega_max]. Undamped it is
-/// 2 / omega_max (gamma = 1/2, beta 0 or 1/4).
+/// 2 / omega_max (gamma = 1/2, beta 0 or 1/4); infinite for omega_max = 0
+/// (no explicit group).
 double explicit_stable_step(double omega_max, RayleighDamping damping);
 
 /// The highest circular frequency [rad/s] of the explicit group: the
@@ -60,7 +61,7 @@ double explicit_stable_step(double omega_max, RayleighDamping damping);
 /// or in `excluded`, global rows this rank owns, left out), by power
 /// iteration from a start that does not depend on the partition (converged
 /// to 1e-7 or 5000 iterations; the Rayleigh quotient approaches it from
-/// below). Collective.
+/// below); 0 without explicit unknowns. Collective.
 double highest_explicit_frequency(Mat K_explicit, Vec lumped,
                                   const std::vector<PetscInt>& excluded);
 
