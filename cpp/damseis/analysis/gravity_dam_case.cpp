@@ -324,8 +324,8 @@ GravityDamConfig read_gravity_dam_config(const input::Case& c)
   g.boundary = boundary == "viscous_spring" ? FoundationBoundary::viscous_spring
                : boundary == "mtf"          ? FoundationBoundary::transmitting
                                             : FoundationBoundary::fixed;
-  const bool viscous_spring = g.boundary != FoundationBoundary::fixed;
-  if (viscous_spring && !s.foundation)
+  const bool with_mass = g.boundary != FoundationBoundary::fixed;
+  if (with_mass && !s.foundation)
     c.fail("foundation.boundary", "needs a foundation block",
            "foundation.enabled = true");
   read_transmitting(c, g);
@@ -403,7 +403,7 @@ GravityDamConfig read_gravity_dam_config(const input::Case& c)
       c.fail("study.foundation_ratios", "is empty",
              "ratios E_f / E_d such as [0.5, 1.0, 2.0]");
   }
-  if (viscous_spring)
+  if (with_mass)
     g = with_foundation(g, g.rock.E, g.boundary);
   g.seismic.faces = {{"upstream", {tags::upstream_face}},
                      {"downstream", {tags::downstream_face}}};

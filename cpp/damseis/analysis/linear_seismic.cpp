@@ -79,7 +79,6 @@ private:
   /// A wave foundation: the boundary's springs into K, its dashpots kept
   /// for the damping, the free field of the ground motion.
   void set_up_wave_foundation(Mat K);
-
   /// The seismic load: the free field's (wave foundation) or the base
   /// acceleration's, with `sustained` held.
   std::unique_ptr<engine::DynamicLoad> seismic_load(Vec sustained) const;
@@ -615,16 +614,7 @@ json LinearSeismicAnalysis::results()
         *_wave, *_free_field, _boundary ? _boundary->measure() : 0.0);
     summary["foundation"]["free_field_load_seconds"] = _free_field_seconds;
     if (_mtf)
-    {
-      summary["foundation"]["model"] =
-          "mass, multi-transmitting boundary (Liao), explicit band (Hughes-"
-          "Liu partition), " +
-          _free_field->description();
       summary["foundation"]["mtf"] = _mtf->summary();
-      summary["foundation"].erase("spring_factors");
-      summary["foundation"].erase("boundary_measure");
-      summary["foundation"].erase("boundary_measure_unit");
-    }
   }
   summary["wall_seconds"] = seconds_since(_wall_start);
   print_summary_line(_comm, summary);
@@ -652,21 +642,29 @@ nlohmann::json wave_foundation_summary(const WaveFoundation& wave,
   nlohmann::json corrected = nlohmann::json::array();
   for (int i = 0; i < 3; ++i)
     corrected.push_back(f.baseline_corrected(i));
-  return {{"model", "mass, viscous-spring boundary, " + f.description()},
-          {"boundary_measure", boundary_measure},
-          {"boundary_measure_unit", "m2 in 3D, m in 2D (per unit thickness)"},
-          {"spring_factors", {wave.factors.normal, wave.factors.tangential}},
-          {"scattering_centre_m", wave.centre},
-          {"rock",
-           {{"E_pa", wave.rock.E},
-            {"nu", wave.rock.nu},
-            {"rho_kg_m3", wave.rock.rho},
-            {"cp_m_s", wave.rock.cp()},
-            {"cs_m_s", wave.rock.cs()}}},
-          {"z_base_m", wave.z_base},
-          {"z_surface_m", wave.z_surface},
-          {"surface_delay_s", f.surface_delay()},
-          {"record_baseline_corrected", corrected}};
+  nlohmann::json s = {{"scattering_centre_m", wave.centre},
+                      {"rock",
+                       {{"E_pa", wave.rock.E},
+                        {"nu", wave.rock.nu},
+                        {"rho_kg_m3", wave.rock.rho},
+                        {"cp_m_s", wave.rock.cp()},
+                        {"cs_m_s", wave.rock.cs()}}},
+                      {"z_base_m", wave.z_base},
+                      {"z_surface_m", wave.z_surface},
+                      {"surface_delay_s", f.surface_delay()},
+                      {"record_baseline_corrected", corrected}};
+  if (wave.mtf)
+  {
+    s["model"] = "mass, multi-transmitting boundary (Liao), explicit band "
+                 "(Hughes-Liu partition), " +
+                 f.description();
+    return s;
+  }
+  s["model"] = "mass, viscous-spring boundary, " + f.description();
+  s["boundary_measure"] = boundary_measure;
+  s["boundary_measure_unit"] = "m2 in 3D, m in 2D (per unit thickness)";
+  s["spring_factors"] = {wave.factors.normal, wave.factors.tangential};
+  return s;
 }
 } // namespace damseis::analysis
 

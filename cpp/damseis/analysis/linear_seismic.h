@@ -90,7 +90,8 @@ inline nlohmann::json run_linear_seismic(fem::ElasticModel& fe,
   return linear_seismic_analysis(fe, settings, loads, folder, tie)->run();
 }
 
-/// The summary's description of a wave foundation (boundary, rock, input).
+/// The summary's description of a wave foundation (boundary, rock, input;
+/// `boundary_measure` and the spring factors for a viscous-spring one).
 nlohmann::json wave_foundation_summary(const WaveFoundation& wave,
                                        const boundary::FreeField& f,
                                        double boundary_measure);

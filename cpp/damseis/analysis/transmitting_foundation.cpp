@@ -1,9 +1,9 @@
 #include "transmitting_foundation.h"
 #include "free_field_load.h"
+#include "run_outputs.h"
 #include <damseis/dynamics/partitioned_newmark.h>
 #include <damseis/engine/partitioned_stepper.h>
 #include <damseis/input/case.h>
-#include <damseis/linalg/duplicate_matrix.h>
 #include <damseis/results/progress.h>
 #include <numbers>
 #include <sstream>
@@ -22,11 +22,8 @@ TransmittingFoundation::TransmittingFoundation(
 {
   const Transmitting& t = *wave.mtf;
   // The band's cells are the explicit group.
-  std::vector<std::int32_t> band;
-  const auto& cell_tags = *fe.model().cell_tags;
-  for (std::size_t i = 0; i < cell_tags.indices().size(); ++i)
-    if (cell_tags.values()[i] == t.band_region)
-      band.push_back(cell_tags.indices()[i]);
+  const std::vector<std::int32_t> band =
+      region_cells(fe.model(), t.band_region);
   fem::ElasticModel::Partitioned p =
       fe.assemble_partitioned({t.band_region}, reservoir);
   _K = Matrix(p.K, false);
@@ -43,11 +40,8 @@ TransmittingFoundation::TransmittingFoundation(
   _mtf = std::make_shared<fem::MtfBoundary>(
       *fe.V(), *fe.model().facet_tags, wave.boundary_tags, band, m,
       separated_field(_field, ground, dt));
-  // The band's highest frequency (its stiffness alone, its lumped mass).
-  Matrix K_band(linalg::duplicate_matrix(_K.mat(), MAT_COPY_VALUES), false);
-  MatAXPY(K_band.mat(), -1.0, _K_implicit.mat(), SAME_NONZERO_PATTERN);
-  _omega = dynamics::highest_explicit_frequency(K_band.mat(), _band_mass.vec(),
-                                                _mtf->rows());
+  _omega = dynamics::highest_explicit_frequency(_K.mat(), _K_implicit.mat(),
+                                                _band_mass.vec(), _mtf->rows());
   const auto nodes = _mtf->node_counts();
   std::ostringstream line;
   line << "foundation with mass, multi-transmitting boundary (order " << t.order

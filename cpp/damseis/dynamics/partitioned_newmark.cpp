@@ -63,12 +63,13 @@ double explicit_stable_step(double omega_max, RayleighDamping damping)
   return lo;
 }
 
-double highest_explicit_frequency(Mat K_explicit, Vec lumped,
+double highest_explicit_frequency(Mat K, Mat K_implicit, Vec lumped,
                                   const std::vector<PetscInt>& excluded)
 {
-  Vec x, y, mask;
+  Vec x, y, y_implicit, mask;
   VecDuplicate(lumped, &x);
   VecDuplicate(lumped, &y);
+  VecDuplicate(lumped, &y_implicit);
   VecDuplicate(lumped, &mask);
   PetscInt lo = 0, hi = 0;
   VecGetOwnershipRange(x, &lo, &hi);
@@ -104,8 +105,10 @@ double highest_explicit_frequency(Mat K_explicit, Vec lumped,
   double lambda = 0.0;
   for (int it = 0; it < 5000; ++it)
   {
-    // lambda = x.K x / x.D x; x <- mask D^-1 K x, normalised.
-    MatMult(K_explicit, x, y);
+    // lambda = x.K_E x / x.D x; x <- mask D^-1 K_E x, normalised.
+    MatMult(K, x, y);
+    MatMult(K_implicit, x, y_implicit);
+    VecAXPY(y, -1.0, y_implicit);
     double xKx = 0.0, xDx = 0.0;
     VecDot(x, y, &xKx);
     VecPointwiseMult(y, y, inverse);
@@ -126,7 +129,7 @@ double highest_explicit_frequency(Mat K_explicit, Vec lumped,
     if (converged || norm == 0.0)
       break;
   }
-  for (Vec* v : {&x, &y, &mask, &inverse})
+  for (Vec* v : {&x, &y, &y_implicit, &mask, &inverse})
     VecDestroy(v);
   return std::sqrt(std::max(lambda, 0.0));
 }

@@ -1,6 +1,7 @@
 #include "mtf_boundary.h"
 #include <algorithm>
 #include <cmath>
+#include <damseis/geometry/root_status.h>
 #include <damseis/linalg/all_gather.h>
 #include <dolfinx/common/IndexMap.h>
 #include <dolfinx/fem/DofMap.h>
@@ -90,17 +91,13 @@ void throw_if_any(MPI_Comm comm, const std::string& message)
   MPI_Allreduce(&mine, &first, 1, MPI_INT, MPI_MIN, comm);
   if (first == 1 << 30)
     return;
-  int length = static_cast<int>(message.size());
-  MPI_Bcast(&length, 1, MPI_INT, first, comm);
-  std::string text = message;
-  text.resize(length);
-  MPI_Bcast(text.data(), length, MPI_CHAR, first, comm);
-  throw std::invalid_argument(text);
+  throw std::invalid_argument(
+      geometry::broadcast_from_root(comm, message, first));
 }
 
 /// The owned nodes of V on the facets tagged `tags`, with the outward
-/// normal of one of their facets: a bottom facet's (normal down) where
-/// there is one (corners belong to the bottom).
+/// normal of one of their facets, or straight down where one of them is a
+/// bottom facet (corners belong to the bottom).
 std::map<std::int32_t, MtfBoundary::Node>
 boundary_nodes(const dolfinx::fem::FunctionSpace& V,
                const dolfinx::mesh::MeshTags<std::int32_t>& facets,
@@ -127,8 +124,13 @@ boundary_nodes(const dolfinx::fem::FunctionSpace& V,
     auto cf = c_to_f->links(c);
     const int local = static_cast<int>(
         std::distance(cf.begin(), std::find(cf.begin(), cf.end(), f)));
-    const Point n = outward_normal(mesh, f, c);
+    Point n = outward_normal(mesh, f, c);
     const bool bottom = n[tdim - 1] < -0.9;
+    if (bottom)
+    {
+      n = {0, 0, 0};
+      n[tdim - 1] = -1.0;
+    }
     auto cell_dofs = dofmap.cell_dofs(c);
     for (int ld : layout.entity_closure_dofs(fdim, local))
     {
@@ -249,17 +251,11 @@ MtfBoundary::MtfBoundary(const dolfinx::fem::FunctionSpace& V,
   std::string missing;
   for (const auto& [b, node] : nodes)
   {
-    Point nu = node.normal;
-    if (node.bottom) // straight down
-    {
-      nu = {0, 0, 0};
-      nu[tdim - 1] = -1.0;
-    }
     for (int k = 0; k < width && missing.empty(); ++k)
     {
       Point p = node.x;
       for (int j = 0; j < 3; ++j)
-        p[j] -= k * dx * nu[j];
+        p[j] -= k * dx * node.normal[j];
       const std::int32_t q = band.find(p);
       if (q < 0)
       {
@@ -279,7 +275,7 @@ MtfBoundary::MtfBoundary(const dolfinx::fem::FunctionSpace& V,
           gathered.push_back(band.blocks[q] * _dim + c);
       _stencil.push_back(it->second);
     }
-    _nodes.push_back({node.x, nu, node.bottom});
+    _nodes.push_back(node);
     for (int c = 0; c < _dim; ++c)
       _rows.push_back((first_block + b) * _dim + c);
   }
@@ -322,10 +318,10 @@ void MtfBoundary::values(int n_next, Vec u_n, Vec u_prev, std::span<double> out)
   VecGetArrayRead(_prev, &prev);
   const int width = _normal.stencil(), order = _normal.order();
   const double dt = _s.dt, dx = _s.spacing;
+  const double t = n_next * dt;
   for (std::size_t i = 0; i < _nodes.size(); ++i)
   {
     const Node& node = _nodes[i];
-    const double t = n_next * dt;
     // u_0 = u_in(x_0, t_(n+1)) + sum_j sum_k w_jk (u - u_in)(x_k, t_(n+1-j))
     // for the normal and the tangential formula's weights.
     std::array<double, 3> normal{}, tangential{};

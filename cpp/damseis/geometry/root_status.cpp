@@ -3,12 +3,12 @@
 
 namespace damseis::geometry
 {
-std::string broadcast_from_root(MPI_Comm comm, std::string text)
+std::string broadcast_from_root(MPI_Comm comm, std::string text, int root)
 {
   int length = static_cast<int>(text.size());
-  MPI_Bcast(&length, 1, MPI_INT, 0, comm);
+  MPI_Bcast(&length, 1, MPI_INT, root, comm);
   text.resize(static_cast<std::size_t>(length));
-  MPI_Bcast(text.data(), length, MPI_CHAR, 0, comm);
+  MPI_Bcast(text.data(), length, MPI_CHAR, root, comm);
   return text;
 }
 

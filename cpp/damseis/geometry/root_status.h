@@ -8,8 +8,8 @@
 
 namespace damseis::geometry
 {
-/// `text` of rank 0, on every rank. Collective.
-std::string broadcast_from_root(MPI_Comm comm, std::string text);
+/// `text` of rank `root` (0 by default), on every rank. Collective.
+std::string broadcast_from_root(MPI_Comm comm, std::string text, int root = 0);
 
 /// Broadcasts rank 0's success flag and error message; if it failed, throws
 /// the message on every rank (std::invalid_argument if `invalid`, else
