@@ -7,7 +7,8 @@ front of it (upstream face from upstream, downstream face from downstream).
 Usage: plot_arch_dam.py OUT_DIR
 Reads crest.csv, face_upstream.csv, face_downstream.csv and summary.json;
 writes crest_history.png, face_envelopes.png, face_arch_cantilever.png
-(the arch and cantilever stress envelopes) (and, with contact joints,
+(the arch and cantilever stress envelopes), face_strain_rate.png (HTC
+concrete: face_<face>_concrete.csv) (and, with contact joints,
 joints_along_axis.png and joint_histories.png: plot_joints.py).
 """
 import json
@@ -81,7 +82,7 @@ def face_blocks(d, planes):
     its side (column joint_side: 1 on side 2, the block beyond)."""
     q = np.column_stack([d["x_m"], d["y_m"], d["z_m"]])
     block = np.zeros(len(q), dtype=int)
-    if not planes or "joint_side" not in d.dtype.names:
+    if not planes or "joint_side" not in d:
         return block
     # The planes come from six-digit coordinates; the points off a plane
     # lie an element or so away from it.
@@ -93,6 +94,21 @@ def face_blocks(d, planes):
     return block
 
 
+def read_face(path: Path) -> dict:
+    """A face CSV as a dict of columns. With a column `cell` (quadrature
+    points of a nonlinear run: the points of a cell lie at several depths
+    behind the face) each cell's points become one point, at their mean
+    position with their mean values."""
+    d = np.genfromtxt(path, delimiter=",", names=True)
+    cols = {k: np.atleast_1d(d[k]) for k in d.dtype.names}
+    if "cell" not in cols:
+        return cols
+    cells, inverse = np.unique(cols.pop("cell"), return_inverse=True)
+    count = np.bincount(inverse, minlength=len(cells))
+    return {k: np.bincount(inverse, weights=v, minlength=len(cells)) / count
+            for k, v in cols.items()}
+
+
 def plot_face_maps(out: Path, summary: dict, suffix: str, panels, title: str,
                    png: str) -> None:
     """Maps of face envelopes, a row per face (face_<face><suffix>.csv),
@@ -101,8 +117,7 @@ def plot_face_maps(out: Path, summary: dict, suffix: str, panels, title: str,
     r = summary.get("away_from_singular_points", {}).get("radius_m")
     planes = joint_planes(out)
     for row, face in enumerate(("upstream", "downstream")):
-        d = np.genfromtxt(out / f"face_{face}{suffix}.csv", delimiter=",",
-                          names=True)
+        d = read_face(out / f"face_{face}{suffix}.csv")
         # Observer in front of the face: the downstream face is seen looking
         # upstream, so the left bank (x < 0) is on the right.
         x = -d["x_m"] if face == "downstream" else d["x_m"]
@@ -119,11 +134,11 @@ def plot_face_maps(out: Path, summary: dict, suffix: str, panels, title: str,
             # beyond it the colour saturates.
             v = d[key]
             lo, hi = v.min(), v.max()
-            if r is not None and "distance_to_singular_m" in d.dtype.names:
+            if r is not None and "distance_to_singular_m" in d:
                 away = d["distance_to_singular_m"] >= r
                 # Nor the joints' edges, where node-to-node impacts load
                 # single points.
-                if "joint_side" in d.dtype.names:
+                if "joint_side" in d:
                     away &= d["joint_side"] == 0
                 if away.any():
                     lo, hi = v[away].min(), v[away].max()
@@ -195,6 +210,45 @@ def plot_faces(out: Path, summary: dict) -> None:
         "face_arch_cantilever.png")
 
 
+def plot_concrete_faces(out: Path, summary: dict) -> None:
+    """HTC concrete runs: maps of the envelope of the strain rate (log
+    scale) and of the final kappa_t (cracking) on both faces
+    (face_<face>_concrete.csv), as the paper's strain-rate maps."""
+    if not (out / "face_upstream_concrete.csv").exists():
+        return
+    fig, axes = plt.subplots(2, 2, figsize=(13, 8))
+    for row, face in enumerate(("upstream", "downstream")):
+        d = read_face(out / f"face_{face}_concrete.csv")
+        x = -d["x_m"] if face == "downstream" else d["x_m"]
+        tri = face_triangulation(x, d["z_m"])
+        rate = np.log10(np.maximum(d["max_strain_rate_per_s"], 1e-8))
+        panels = ((rate, "log10 of the largest strain rate [1/s]",
+                   f"max {d['max_strain_rate_per_s'].max():.3g} /s"),
+                  (d["kappa_t"], "kappa_t at the end (tensile damage)",
+                   f"max {d['kappa_t'].max():.3g}"))
+        for col, (v, what, note) in enumerate(panels):
+            ax = axes[row, col]
+            hi = v.max()
+            lo = min(v.min(), hi - 1e-12)
+            cs = ax.tricontourf(tri, v, levels=np.linspace(lo, hi, 21),
+                                cmap="viridis" if col == 0 else "magma_r")
+            fig.colorbar(cs, ax=ax, shrink=0.85)
+            ax.set_title(f"{face} face: {what}\n{note} (cell means)",
+                         fontsize=9)
+            ax.set_aspect("equal")
+            ax.set_xlabel("x along the dam axis [m]"
+                          + (" (mirrored: seen from downstream)"
+                             if face == "downstream" else ""))
+            ax.set_ylabel("z [m]")
+    rate = summary.get("max_strain_rate_per_s", {})
+    fig.suptitle("HTC concrete: strain rate and cracking on the faces"
+                 + (f" (largest strain rate in the dam {rate['value']:.3g} /s"
+                    f" at t = {rate['t']:.2f} s)" if "value" in rate else ""))
+    fig.tight_layout()
+    fig.savefig(out / "face_strain_rate.png", dpi=120)
+    plt.close(fig)
+
+
 def main() -> None:
     if len(sys.argv) != 2:
         sys.exit(__doc__)
@@ -202,6 +256,7 @@ def main() -> None:
     summary = json.loads((out / "summary.json").read_text())
     plot_crest(out, summary)
     plot_faces(out, summary)
+    plot_concrete_faces(out, summary)
     if (out / "joint_table.csv").exists():
         plot_joints(out)
         plot_joint_histories(out)

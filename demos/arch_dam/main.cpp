@@ -1,14 +1,16 @@
-// Arch dam: linear seismic analysis of a 3D arch dam in its canyon, on a
+// Arch dam: seismic analysis of a 3D arch dam in its canyon, on a
 // massless foundation or on rock with mass and a viscous-spring boundary,
 // with bonded or contact contraction joints.
 //   build/bin/arch_dam [--case FILE] [--out DIR] [--set key=value ...]
 // With no arguments it runs demos/arch_dam/arch_dam.toml (the paper's 102 m
 // dam); presets of other dams are in demos/arch_dam/presets/; --help lists
-// the keys.
+// the keys. material.model runs the HTC concrete (elastic, plastic or
+// viscoplastic) instead of the linear engine.
 //
 // The phases of the analysis are below; to build a study of your own, copy
 // this file and change a phase. study.joints repeats the analysis for
-// several sets of active joints (the paper's Tables 2-5).
+// several sets of active joints (the paper's Tables 2-5), study.table1 for
+// the three concrete models at several reservoir levels (Table 1).
 #include <damseis/analysis/arch_dam_analysis.h>
 #include <damseis/analysis/demo_main.h>
 #include <damseis/analysis/foundation_study.h>
@@ -61,6 +63,18 @@ nlohmann::json foundation_study(MPI_Comm comm, const ArchDamConfig& config,
       });
 }
 
+// The paper's section I study (study.table1): the analysis above with the
+// elastic, plastic and viscoplastic concrete at each reservoir level.
+nlohmann::json table1_study(MPI_Comm comm, const ArchDamConfig& config,
+                            const std::filesystem::path& out_dir,
+                            const std::string& case_text)
+{
+  return run_arch_table1_study(
+      comm, config, out_dir,
+      [&](const ArchDamConfig& c, const std::filesystem::path& dir)
+      { return analyse(comm, c, dir, case_text); });
+}
+
 // A joint study (study.joints): the analysis above once per set of active
 // joints, each into its subfolder, then the comparison tables.
 nlohmann::json study(MPI_Comm comm, const ArchDamConfig& config,
@@ -69,6 +83,8 @@ nlohmann::json study(MPI_Comm comm, const ArchDamConfig& config,
 {
   if (!config.foundation_ratios.empty())
     return foundation_study(comm, config, out_dir, case_text);
+  if (config.table1)
+    return table1_study(comm, config, out_dir, case_text);
   if (config.study_joints.empty())
     return analyse(comm, config, out_dir, case_text);
   std::vector<JointStudyRun> runs;

@@ -77,6 +77,54 @@ TEST(MaterialCurves, LargeElementKeepsFractureEnergy)
               c.energy * 3.0 / p.Gf);
 }
 
+// Element larger than l_ch with the strength kept (crack_band_keep_strength):
+// peak ft0, softening modulus at the peak E / snap_back_safety, so the energy
+// per unit volume is snap_back_safety ft0^2 / E (the exponential law: W =
+// sqrt(3/2) ft0 kappa_tu with kappa_tu = sqrt(2/3) Gf_eff / (h ft0) and Gf_eff
+// = s ft0^2 h / E). Tolerances as above.
+TEST(MaterialCurves, LargeElementKeepsStrength)
+{
+  ConcreteParameters p;
+  p.mode = Mode::plastic;
+  p.element_size = 3.0;
+  p.tension_softening = TensionSoftening::crack_band_keep_strength;
+  const HtcConcrete m(p);
+  ASSERT_FALSE(m.derived().tension_strength_reduced);
+  ASSERT_TRUE(m.derived().tension_energy_raised);
+  EXPECT_EQ(m.derived().ft0, p.ft0);
+  const double W = p.snap_back_safety * p.ft0 * p.ft0 / p.E;
+  const Curve c = uniaxial(m, 10.0 * W / p.ft0, 1e-5, 20000);
+  ASSERT_TRUE(c.completed);
+  EXPECT_NEAR(c.peak / p.ft0, 1.0, 5e-3);
+  EXPECT_NEAR(c.energy / W, 1.0, 1e-2);
+  EXPECT_GT(c.energy * 3.0, p.Gf); // more than Gf per unit crack area
+  std::printf("tension h = 3 m, strength kept: W / (1.25 ft0^2 / E) = %.4f, "
+              "W h / Gf = %.3f\n",
+              c.energy / W, c.energy * 3.0 / p.Gf);
+}
+
+// No tension softening: perfectly plastic in uniaxial tension, the stress
+// stays at ft0 however large the strain and whatever the element size
+// (Rankine plane with Ht = 1). 0.5% as above.
+TEST(MaterialCurves, NoSofteningIsPerfectlyPlasticInTension)
+{
+  for (double h : {0.1, 30.0})
+  {
+    ConcreteParameters p;
+    p.mode = Mode::plastic;
+    p.element_size = h;
+    p.tension_softening = TensionSoftening::none;
+    const HtcConcrete m(p);
+    EXPECT_FALSE(m.derived().tension_strength_reduced);
+    EXPECT_FALSE(m.derived().tension_energy_raised);
+    const auto r = run_path(m, uniaxial_path(20.0 * p.ft0 / p.E, 1e-5, 2000));
+    ASSERT_TRUE(r.completed);
+    EXPECT_NEAR(r.points.back().state.stress[0] / p.ft0, 1.0, 5e-3)
+        << "h = " << h;
+    EXPECT_GT(r.points.back().state.kappa_t, 10.0 * p.ft0 / p.E);
+  }
+}
+
 // Reference: Gc / h (crack band in compression), peak = fc0. 1% as above
 // (energy counted down to the residual floor 1e-3 fc0).
 TEST(MaterialCurves, UniaxialCompressionPeakAndCrushingEnergy)

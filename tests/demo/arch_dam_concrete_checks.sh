@@ -10,6 +10,12 @@
 #     the time history (up to 133 in a step, 196 Newton iterations): 2
 #     ranks equal serial, the crest history to 1e-5 of its peak (the Newton
 #     tolerance), the same Newton iterations.
+#  3. study.table1 at two reservoir levels, perfectly plastic in tension
+#     (concrete.tension_softening = "none", ft 1 MPa, +30% for the
+#     rate-independent models, 0.8 g, 0.3 s): the six runs and table1.csv;
+#     the plastic model's largest principal stress at the quadrature points
+#     is the dynamic tensile strength 1.3 MPa (the Rankine plane sigma_1 <=
+#     ft, no softening) to 1e-6, where the elastic model's exceeds it.
 # Usage: arch_dam_concrete_checks.sh ARCH_DAM MPIEXEC PYTHON
 set -eu
 exe=$1 mpiexec=$2 python=$3
@@ -25,8 +31,13 @@ vp=(--set material.model=viscoplastic --set concrete.ft=1.0e6
     --set time.duration=1.0)
 "$exe" --out "$work/vp1" "${common[@]}" "${vp[@]}" >/dev/null
 "$mpiexec" -n 2 "$exe" --out "$work/vp2" "${common[@]}" "${vp[@]}" >/dev/null
+"$exe" --out "$work/table1" "${common[@]}" --set study.table1=true \
+  --set 'study.reservoir_levels=[100, 70]' --set concrete.ft=1.0e6 \
+  --set concrete.tension_softening=none --set concrete.dynamic_factor_E=1.3 \
+  --set concrete.dynamic_factor_strength=1.3 --set motion.stream.peak_g=0.8 \
+  >/dev/null
 "$python" - "$work" <<'PY'
-import json, sys
+import csv, json, os, sys
 import numpy as np
 w = sys.argv[1]
 def crest(d):
@@ -51,4 +62,20 @@ assert d2 < 1e-5, d2
 assert n1["iterations"] == n2["iterations"]
 assert n1["max_inelastic_points"] > 0, "no point cracked in the time history"
 assert s1["analysis"].startswith("arch dam, HTC concrete (viscoplastic)")
+t1 = list(csv.DictReader(open(f"{w}/table1/table1.csv")))
+assert [(r["reservoir_level_m"], r["model"]) for r in t1] == [
+    (l, m) for l in ("100", "70")
+    for m in ("elastic", "plastic", "viscoplastic")], t1
+for l in ("100", "70"):
+    for m in ("elastic", "plastic", "viscoplastic"):
+        assert os.path.exists(f"{w}/table1/level_{l}m/{m}/summary.json")
+    assert os.path.exists(f"{w}/table1/level_{l}m/plastic/"
+                          "face_upstream_concrete.csv")
+top = {r["model"]: float(r["max_tension_mpa"]) for r in t1
+       if r["reservoir_level_m"] == "100"}
+print(f"table1, level 100 m: largest principal stress elastic "
+      f"{top['elastic']:.4f}, plastic {top['plastic']:.6f}, viscoplastic "
+      f"{top['viscoplastic']:.4f} MPa (plastic strength 1.3 MPa)")
+assert top["elastic"] > 1.3, "the elastic run does not reach the strength"
+assert abs(top["plastic"] - 1.3) < 1.3e-6, top["plastic"]
 PY

@@ -2,6 +2,7 @@
 #include "linear_seismic.h"
 #include "nonlinear_seismic.h"
 #include "run_outputs.h"
+#include "table1.h"
 #include <cstdio>
 #include <cstdlib>
 #include <damseis/fem/tied_dofs.h>
@@ -11,6 +12,7 @@
 #include <damseis/results/progress.h>
 #include <damseis/results/singular_points.h>
 #include <dolfinx/la/petsc.h>
+#include <sstream>
 
 namespace damseis::analysis
 {
@@ -143,5 +145,38 @@ nlohmann::json arch_dam_results(MPI_Comm comm, const ArchDamConfig& cfg,
     }
   }
   return summary;
+}
+nlohmann::json run_arch_table1_study(MPI_Comm comm, const ArchDamConfig& cfg,
+                                     const std::filesystem::path& out_dir,
+                                     const ArchDamRun& analyse)
+{
+  const bool levels = cfg.table1_levels.size() > 1;
+  std::vector<Table1Run> runs;
+  for (double level : cfg.table1_levels)
+  {
+    std::ostringstream name;
+    name << "level_" << level << "m";
+    for (ConcreteModelKind kind :
+         {ConcreteModelKind::elastic, ConcreteModelKind::plastic,
+          ConcreteModelKind::viscoplastic})
+    {
+      ArchDamConfig c = with_reservoir_level(cfg, level);
+      c.table1 = false;
+      c.table1_levels.clear();
+      c.concrete_model = with_model(cfg.concrete_model, kind);
+      const std::filesystem::path dir =
+          levels ? out_dir / name.str() / to_string(kind)
+                 : out_dir / to_string(kind);
+      results::print(comm, "== " + (levels ? name.str() + ", " : "") +
+                               to_string(kind) + " ==");
+      runs.push_back(
+          {to_string(kind), levels ? level : std::nan(""), analyse(c, dir)});
+    }
+  }
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  if (rank == 0)
+    write_table1(runs, out_dir);
+  return runs.back().summary;
 }
 } // namespace damseis::analysis

@@ -10,6 +10,7 @@
 #include <damseis/geometry/arch_mesh.h>
 #include <dolfinx/la/petsc.h>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <mpi.h>
 #include <nlohmann/json.hpp>
@@ -52,4 +53,15 @@ nlohmann::json arch_dam_results(MPI_Comm comm, const ArchDamConfig& cfg,
                                 const ArchDamModel& model,
                                 nlohmann::json summary,
                                 const std::filesystem::path& out_dir);
+/// One analysis of a study: the configuration, into its folder.
+using ArchDamRun = std::function<nlohmann::json(const ArchDamConfig&,
+                                                const std::filesystem::path&)>;
+
+/// study.table1 (the paper's section I): the elastic, plastic and
+/// viscoplastic concrete at each reservoir level of the study, into
+/// level_<m>/<model> (one level: <model>), then table1.csv and table1.md.
+/// Returns the last run's summary.
+nlohmann::json run_arch_table1_study(MPI_Comm comm, const ArchDamConfig& cfg,
+                                     const std::filesystem::path& out_dir,
+                                     const ArchDamRun& analyse);
 } // namespace damseis::analysis

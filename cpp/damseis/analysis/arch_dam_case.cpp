@@ -77,6 +77,15 @@ input::Schema arch_dam_schema()
                  "a study: one run per joint set, each into its subfolder, "
                  "and the comparison tables (joint_study.md): \"none\" or "
                  "the active labels, e.g. [\"none\", \"DGJ\", \"ADGJM\"]");
+  s.boolean("study.table1", "false", "-",
+            "the paper's section I study: the elastic, plastic and "
+            "viscoplastic HTC concrete at each level of "
+            "study.reservoir_levels, into subfolders level_<m>/<model>; "
+            "table1.csv/.md (the paper's Table 1)");
+  s.real_array("study.reservoir_levels", "[]", "m",
+               "reservoir levels of study.table1 above the crown's base, "
+               "e.g. [275, 180] ([]: reservoir.level only)")
+      .at_least(0);
   add_seismic_keys(s, arch_dam_directions(), "[]", "[]");
   return s;
 }
@@ -139,6 +148,46 @@ void read_joint_contact(const input::Case& c, ArchDamConfig& a)
   a.history_points = read_joint_history_points(c);
   a.ncp = read_ncp_settings(c);
 }
+/// A reservoir level the mesh can follow: 0, or at least a tenth of
+/// mesh.size from the base and the crest.
+void check_water_line(const input::Case& c, const std::string& key,
+                      double level, double h, double size)
+{
+  if (level > 0.0 && (level < 0.1 * size || level > h - 0.1 * size))
+    c.fail(key,
+           "is within a tenth of mesh.size of the base or of the crest, where "
+           "the mesh cannot follow the water line",
+           "0 (no reservoir) or a level between the base and the crest at "
+           "least mesh.size / 10 from both");
+}
+
+/// study.table1 and its levels; one study at a time, bonded joints.
+void read_table1_study(const input::Case& c, ArchDamConfig& a, double h)
+{
+  a.table1 = c.boolean("study.table1");
+  a.table1_levels = c.reals("study.reservoir_levels");
+  if (!a.table1)
+  {
+    if (!a.table1_levels.empty())
+      c.fail("study.reservoir_levels", "is given without study.table1",
+             "study.table1 = true, or remove study.reservoir_levels");
+    return;
+  }
+  if (a.table1_levels.empty())
+    a.table1_levels = {a.seismic.reservoir.level};
+  for (double level : a.table1_levels)
+    check_water_line(c, "study.reservoir_levels", level, h,
+                     a.geometry.mesh.size);
+  if (!a.study_joints.empty() || c.boolean("study.foundation"))
+    c.fail("study.table1", "is given with another study",
+           "one study at a time (study.joints = [], study.foundation = "
+           "false)");
+  if (a.joints == JointModel::contact)
+    c.fail("study.table1",
+           "needs HTC concrete, not yet available with contact joints",
+           "joints.model = \"bonded\"");
+}
+
 /// study.joints: every set "none" or distinct candidate labels.
 void read_joint_study(const input::Case& c, ArchDamConfig& a)
 {
@@ -200,12 +249,7 @@ ArchDamConfig read_arch_dam_config(const input::Case& c)
     check_output_point(c, key, x, 3, geometry::distance_from_model(shape, x),
                        size, "the dam or the foundation rock");
   }
-  if (level > 0.0 && (level < 0.1 * size || level > h - 0.1 * size))
-    c.fail("reservoir.level",
-           "is within a tenth of mesh.size of the base or of the crest, where "
-           "the mesh cannot follow the water line",
-           "0 (no reservoir) or a level between the base and the crest at "
-           "least mesh.size / 10 from both");
+  check_water_line(c, "reservoir.level", level, h, size);
   a.seismic.faces = {{"upstream", {tags::upstream_face, tags::upstream_wetted}},
                      {"downstream", {tags::downstream_face}}};
   read_joint_contact(c, a);
@@ -232,9 +276,18 @@ ArchDamConfig read_arch_dam_config(const input::Case& c)
       c.fail("study.foundation", "is given with study.joints",
              "one study at a time");
   }
+  read_table1_study(c, a, h);
   if (viscous_spring)
     a = with_foundation(a, a.rock.E, true);
   return a;
+}
+
+ArchDamConfig with_reservoir_level(const ArchDamConfig& a, double level)
+{
+  ArchDamConfig c = a;
+  c.geometry.mesh.water_level = level;
+  c.seismic.reservoir.level = level;
+  return c;
 }
 
 ArchDamConfig with_foundation(const ArchDamConfig& cfg, double E_f,

@@ -57,6 +57,10 @@ struct ArchDamConfig
   /// study.joints: the joint sets of a study, one run each ("none": no
   /// joints; else active labels such as "DGJ"); empty: one run.
   std::vector<std::string> study_joints;
+  /// study.table1: elastic, plastic and viscoplastic at each of
+  /// table1_levels (reservoir levels [m above the crown's base]).
+  bool table1 = false;
+  std::vector<double> table1_levels;
 };
 
 /// Ground-motion directions in 3D: x across the canyon, y along the river
@@ -79,6 +83,9 @@ ArchDamConfig with_foundation(const ArchDamConfig& cfg, double E_f,
 ArchDamConfig joint_study_case(const ArchDamConfig& a, const std::string& set);
 /// Its subfolder: joints_0, joints_3_DGJ, ...
 std::string joint_study_folder(const std::string& set);
+/// The configuration with the reservoir at `level` [m above the crown's
+/// base] (the mesh follows the water line).
+ArchDamConfig with_reservoir_level(const ArchDamConfig& a, double level);
 /// The labels of all candidate joint positions ("ABC...").
 std::string candidate_labels(const ArchDamConfig& a);
 } // namespace damseis::analysis

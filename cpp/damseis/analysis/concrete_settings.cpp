@@ -33,6 +33,15 @@ void add_concrete_keys(input::Schema& s)
       .between_exclusive(1.0, 2.0);
   s.real("concrete.Gf", "200", "N/m", "tensile fracture energy").above(0);
   s.real("concrete.Gc", "20000", "N/m", "compressive fracture energy").above(0);
+  s.string("concrete.tension_softening", "crack_band", "-",
+           "crack_band: exponential softening dissipating Gf per unit crack "
+           "area (Bazant & Oh), ft lowered in cells larger than the "
+           "snap-back limit E Gf / (1.25 ft^2); crack_band_keep_strength: "
+           "those cells keep ft and soften as steeply as the limit allows "
+           "(1.25 ft^2 h / E > Gf per unit area); none: perfectly plastic "
+           "in tension (no softening, no mesh size in the law: coarse 3D "
+           "dam meshes such as the paper's 450-element arch dam)",
+           {"crack_band", "crack_band_keep_strength", "none"});
   s.real("concrete.dynamic_factor_E", "1.0", "-",
          "multiplier of material.E in the rate-independent models (linear, "
          "elastic, plastic; the +30% convention of the Chinese code: 1.3); "
@@ -133,6 +142,12 @@ ConcreteSettings read_concrete_settings(const input::Case& c, double E,
   p.fbc_ratio = c.real("concrete.fbc_ratio");
   p.Gf = c.real("concrete.Gf");
   p.Gc = c.real("concrete.Gc");
+  const std::string softening = c.string("concrete.tension_softening");
+  p.tension_softening =
+      softening == "none" ? material::TensionSoftening::none
+      : softening == "crack_band_keep_strength"
+          ? material::TensionSoftening::crack_band_keep_strength
+          : material::TensionSoftening::crack_band;
   // Every model's strengths must give a valid surface (a study runs all).
   for (ConcreteModelKind k :
        {ConcreteModelKind::plastic, ConcreteModelKind::viscoplastic})

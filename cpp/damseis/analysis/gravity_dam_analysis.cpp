@@ -3,13 +3,12 @@
 #include "linear_seismic.h"
 #include "nonlinear_seismic.h"
 #include "run_outputs.h"
+#include "table1.h"
 #include <damseis/fem/gravity_dam_loads.h>
 #include <damseis/geometry/mesh_estimate.h>
 #include <damseis/geometry/tags.h>
 #include <damseis/results/progress.h>
 #include <dolfinx/la/petsc.h>
-#include <fstream>
-#include <iomanip>
 
 namespace damseis::analysis
 {
@@ -36,50 +35,6 @@ std::map<int, fem::Material> section_materials(const GravityDamConfig& cfg)
   return materials;
 }
 
-/// table1.csv and table1.md from the summaries of the three models.
-void write_table1(
-    const std::vector<std::pair<std::string, nlohmann::json>>& runs,
-    const std::filesystem::path& out_dir)
-{
-  std::ofstream csv(out_dir / "table1.csv"), md(out_dir / "table1.md");
-  const double radius =
-      runs.front().second["away_from_singular_points"]["radius_m"];
-  csv << "model,max_compression_mpa,max_tension_mpa,"
-         "max_compression_away_mpa,max_tension_away_mpa,"
-         "crest_displacement_cm,max_kappa_t,newton_iterations_per_step,"
-         "seconds_per_step,material_integration\n";
-  md << std::setprecision(3) << "| Model | Compression (MPa) | Tension (MPa) "
-     << "| Compression > " << radius << " m from corners (MPa) | Tension > "
-     << radius
-     << " m from corners (MPa) | Crest displacement (cm) | max kappa_t | "
-        "Newton it./step | s/step | integration |\n"
-        "|---|---|---|---|---|---|---|---|---|---|\n";
-  for (const auto& [name, s] : runs)
-  {
-    const double c = s["max_principal_compression_mpa"]["value"];
-    const double t = s["max_principal_tension_mpa"]["value"];
-    const auto& away = s["away_from_singular_points"];
-    const double ca = away["max_principal_compression_mpa"]["value"];
-    const double ta = away["max_principal_tension_mpa"]["value"];
-    const double u =
-        s["crest_displacement_max_m"]["value"].get<double>() * 100.0;
-    const double kt = s["max_kappa_t"]["value"];
-    const double it = s["newton"]["iterations_per_step"];
-    const double sps = s["seconds_per_step"];
-    // The elastic model has nothing to integrate.
-    const std::string integ =
-        name == "elastic"
-            ? "-"
-            : s["concrete"]["material_integration"].get<std::string>();
-    csv << name << "," << c << "," << t << "," << ca << "," << ta << "," << u
-        << "," << kt << "," << it << "," << sps << "," << integ << "\n";
-    md << std::fixed << "| " << name << " | " << std::setprecision(2) << c
-       << " | " << t << " | " << ca << " | " << ta << " | " << u << " | "
-       << std::scientific << std::setprecision(2) << kt << std::fixed << " | "
-       << std::setprecision(2) << it << " | " << std::setprecision(4) << sps
-       << " | " << integ << " |\n";
-  }
-}
 } // namespace
 
 std::vector<Vec> GravityDamModel::static_loads() const
@@ -175,7 +130,7 @@ nlohmann::json run_gravity_dam_study(MPI_Comm comm, const GravityDamConfig& cfg,
     return run_table6_study(comm, cfg, out_dir, case_text, analyse);
   if (!cfg.table1)
     return analyse(comm, cfg, {out_dir, case_text});
-  std::vector<std::pair<std::string, nlohmann::json>> runs;
+  std::vector<Table1Run> runs;
   for (ConcreteModelKind kind :
        {ConcreteModelKind::elastic, ConcreteModelKind::plastic,
         ConcreteModelKind::viscoplastic})
@@ -184,14 +139,14 @@ nlohmann::json run_gravity_dam_study(MPI_Comm comm, const GravityDamConfig& cfg,
     c.table1 = false;
     c.concrete_model = with_model(cfg.concrete_model, kind);
     results::print(comm, "== " + to_string(kind) + " ==");
-    runs.emplace_back(to_string(kind),
-                      analyse(comm, c, {out_dir / to_string(kind), case_text}));
+    runs.push_back({to_string(kind), std::nan(""),
+                    analyse(comm, c, {out_dir / to_string(kind), case_text})});
   }
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   if (rank == 0)
     write_table1(runs, out_dir);
-  return runs.back().second;
+  return runs.back().summary;
 }
 nlohmann::json run_gravity_dam_analysis(MPI_Comm comm,
                                         const GravityDamConfig& config,

@@ -27,6 +27,7 @@
 #include <damseis/results/point_probe.h>
 #include <damseis/results/principal.h>
 #include <damseis/results/progress.h>
+#include <damseis/results/singular_points.h>
 #include <damseis/results/stress_envelope.h>
 #include <dolfinx/common/IndexMap.h>
 #include <dolfinx/fem/DofMap.h>
@@ -260,11 +261,17 @@ json concrete_json(const ConcreteSettings& c, const fem::ConcreteModel& cm,
       {"material_bins", cm.material_count()},
       {"material_integration", c.implex ? "implex" : "implicit"},
       {"characteristic_length_m", concrete_characteristic_length(c)},
+      {"tension_softening", to_string(c.params.tension_softening)},
       {"cells_with_reduced_tensile_strength", cm.cells_with_reduced_strength()},
+      {"cells_with_raised_tensile_energy",
+       cm.cells_with_raised_tensile_energy()},
       // Energy Gf per unit crack area whatever the mesh: P1 cells no
       // larger than the snap-back limit.
       {"crack_band_exact",
-       degree == 1 && cm.cells_with_reduced_strength() == 0}};
+       degree == 1 &&
+           p.tension_softening == material::TensionSoftening::crack_band &&
+           cm.cells_with_reduced_strength() == 0 &&
+           cm.cells_with_raised_tensile_energy() == 0}};
   if (cm.cells_with_reduced_strength() > 0)
   {
     const auto ft_low = cm.reduced_tensile_strength_range();
@@ -316,6 +323,13 @@ void print_crack_band_notes(MPI_Comm comm, const fem::ElasticModel& fe,
                             const ConcreteSettings& concrete,
                             const std::vector<int>& regions)
 {
+  if (concrete.params.tension_softening == material::TensionSoftening::none)
+  {
+    results::print(comm, "note: concrete.tension_softening = \"none\": the "
+                         "concrete is perfectly plastic in tension (no "
+                         "softening, no crack band)");
+    return;
+  }
   if (fe.degree() > 1)
   {
     results::print(comm,
@@ -324,6 +338,23 @@ void print_crack_band_notes(MPI_Comm comm, const fem::ElasticModel& fe,
                        "area) is exact for P1 only (a P2 cell can localise in "
                        "part of its points: 0.75 Gf in the crack-band test); "
                        "use mesh.order = 1 for softening studies");
+  }
+  if (cm.cells_with_raised_tensile_energy() > 0)
+  {
+    std::ostringstream note;
+    note.precision(3);
+    note << "note: " << cm.cells_with_raised_tensile_energy() << " of "
+         << region_cell_count(comm, fe.model(), regions)
+         << " dam cells are larger than E Gf / ("
+         << concrete.params.snap_back_safety
+         << " ft^2) = " << concrete_characteristic_length(concrete)
+         << " m (snap-back limit of the softening): their tensile strength "
+            "is kept (concrete.tension_softening = "
+            "\"crack_band_keep_strength\") and a crack "
+            "in a cell of size h dissipates "
+         << concrete.params.snap_back_safety << " ft^2 h / E per unit area, "
+         << "more than Gf = " << concrete.params.Gf << " N/m";
+    results::print(comm, note.str());
   }
   if (cm.cells_with_reduced_strength() == 0)
     return;
@@ -341,7 +372,7 @@ void print_crack_band_notes(MPI_Comm comm, const fem::ElasticModel& fe,
        << ".." << ft_low[1] * 1e-6
        << " MPa (the crack band is not honoured there; summary.json "
           "concrete.cells_with_reduced_tensile_strength); refine the mesh "
-          "where the concrete cracks";
+          "where the concrete cracks, or see concrete.tension_softening";
   results::print(comm, note.str());
 }
 
@@ -363,6 +394,9 @@ public:
 private:
   void add_recorders(engine::TimeHistory& history);
   void write_concrete_outputs(json& summary) const;
+  void write_concrete_faces(const results::StressEnvelope& envelope,
+                            const ConcreteRecorder& state,
+                            const std::vector<double>& kappa_t) const;
   /// The viscous-spring boundary's springs (K0 and the system's supports),
   /// dashpots and the record's free field.
   void set_up_viscous_spring();
@@ -418,6 +452,7 @@ private:
   std::vector<double> _s_field;
   std::vector<std::int8_t> _in_dam;
   std::vector<std::vector<std::int32_t>> _face_points;
+  std::vector<std::vector<std::int64_t>> _face_point_cells;
   std::array<double, 3> _base_static = {0, 0, 0};
   engine::TimeHistoryReport _run;
 };
@@ -599,10 +634,15 @@ void ConcreteSeismicAnalysis::add_recorders(engine::TimeHistory& history)
       });
   _concrete_state =
       std::make_unique<ConcreteRecorder>(_cm, *_stresses, n_pts, _fe.dim());
+  // The faces' points: those of the cells on them (quadrature points), and
+  // the cell of each (the face maps draw a cell's points as one value).
   for (const auto& [name, face_tags] : _s.faces)
-    _face_points.push_back(results::face_points(
-        *Sq, _s.face_tags ? *_s.face_tags : *model.facet_tags, face_tags,
-        false));
+  {
+    const auto& ft = _s.face_tags ? *_s.face_tags : *model.facet_tags;
+    _face_points.push_back(results::face_points(*Sq, ft, face_tags, false));
+    _face_point_cells.push_back(
+        results::face_point_cells(*Sq, ft, face_tags, _face_points.back()));
+  }
   _points = std::make_unique<PointHistories>(*_fe.V(), _s.crest_point,
                                              _s.base_point, _s.steps, *_u);
   // Envelope of the seismic horizontal displacement along the upstream
@@ -640,7 +680,8 @@ json ConcreteSeismicAnalysis::results()
       write_crest_history(_comm, hist, dim, _s.steps, _s.scheme.dt,
                           crest_static, _base_static, true, dir / "crest.csv");
   const auto& envelope = _stresses->envelope();
-  const json faces = write_faces(_comm, _s, envelope, _face_points, dim, dir);
+  const json faces = write_faces(_comm, _s, envelope, _face_points, dim, dir,
+                                 {}, _face_point_cells);
   _face_u->write_csv(_comm, dir / "displacement_envelope.csv");
 
   json summary = seismic_summary(
@@ -678,6 +719,33 @@ json ConcreteSeismicAnalysis::results()
   return summary;
 }
 
+/// face_<name>_concrete.csv per face of a 3D dam: the envelope of the
+/// strain rate and the final kappa_t at the face's points (the maps of
+/// plot_arch_dam.py).
+void ConcreteSeismicAnalysis::write_concrete_faces(
+    const results::StressEnvelope& envelope, const ConcreteRecorder& state,
+    const std::vector<double>& kappa_t) const
+{
+  for (std::size_t i = 0; i < _s.faces.size(); ++i)
+  {
+    std::vector<double> local;
+    for (std::size_t k = 0; k < _face_points[i].size(); ++k)
+    {
+      const std::int32_t p = _face_points[i][k];
+      const auto& x = envelope.point(p);
+      local.insert(local.end(),
+                   {x[0], x[1], x[2], state.rate().max[p], state.rate().t[p],
+                    kappa_t[p], results::distance_to(x, _s.singular_points),
+                    static_cast<double>(_face_point_cells[i][k])});
+    }
+    write_rows_csv(_comm, local, 8,
+                   "x_m,y_m,z_m,max_strain_rate_per_s,t_max_strain_rate_s,"
+                   "kappa_t,distance_to_singular_m,cell",
+                   _folder.dir /
+                       ("face_" + _s.faces[i].first + "_concrete.csv"));
+  }
+}
+
 /// envelopes.xdmf with the state variables as cell maxima, dam_points.csv,
 /// and the summary's concrete entries.
 void ConcreteSeismicAnalysis::write_concrete_outputs(json& summary) const
@@ -700,6 +768,8 @@ void ConcreteSeismicAnalysis::write_concrete_outputs(json& summary) const
                             {"max_kappa_t_rate_per_s", kt_rate_all}});
   std::vector<double> kt(_cm.kappa_t().begin(), _cm.kappa_t().begin() + n_pts),
       kc(_cm.kappa_c().begin(), _cm.kappa_c().begin() + n_pts);
+  if (_fe.dim() == 3)
+    write_concrete_faces(envelope, state, kt);
   std::vector<double> syy_hi(n_pts), syy_lo(n_pts);
   for (std::size_t i = 0; i < n_pts; ++i)
   {

@@ -58,9 +58,10 @@ void write_face_csv(MPI_Comm comm, const results::StressEnvelope& env,
                     std::span<const std::int32_t> points,
                     std::span<const std::array<double, 3>> singular,
                     const std::filesystem::path& file,
-                    std::span<const std::int8_t> joint_sides)
+                    std::span<const std::int8_t> joint_sides,
+                    std::span<const std::int64_t> cells)
 {
-  const bool sides = !joint_sides.empty();
+  const bool sides = !joint_sides.empty(), with_cells = !cells.empty();
   std::vector<double> local;
   for (std::size_t i = 0; i < points.size(); ++i)
   {
@@ -72,12 +73,14 @@ void write_face_csv(MPI_Comm comm, const results::StressEnvelope& env,
                   env.min_times()[p], results::distance_to(x, singular)});
     if (sides)
       local.push_back(joint_sides[i]);
+    if (with_cells)
+      local.push_back(static_cast<double>(cells[i]));
   }
-  write_rows_csv(comm, local, sides ? 9 : 8,
+  write_rows_csv(comm, local, 8 + sides + with_cells,
                  std::string("x_m,y_m,z_m,max_principal_mpa,t_max_s,"
                              "min_principal_mpa,t_min_s,"
                              "distance_to_singular_m") +
-                     (sides ? ",joint_side" : ""),
+                     (sides ? ",joint_side" : "") + (with_cells ? ",cell" : ""),
                  file);
 }
 
@@ -343,7 +346,8 @@ json write_faces(MPI_Comm comm, const SeismicSettings& s,
                  const results::StressEnvelope& env,
                  const std::vector<std::vector<std::int32_t>>& pts, int dim,
                  const std::filesystem::path& out_dir,
-                 const std::vector<std::vector<std::int8_t>>& joint_sides)
+                 const std::vector<std::vector<std::int8_t>>& joint_sides,
+                 const std::vector<std::vector<std::int64_t>>& cells)
 {
   json faces = json::object();
   for (std::size_t i = 0; i < s.faces.size(); ++i)
@@ -352,7 +356,8 @@ json write_faces(MPI_Comm comm, const SeismicSettings& s,
     write_face_csv(comm, env, pts[i], s.singular_points,
                    out_dir / ("face_" + name + ".csv"),
                    joint_sides.empty() ? std::span<const std::int8_t>()
-                                       : joint_sides[i]);
+                                       : joint_sides[i],
+                   cells.empty() ? std::span<const std::int64_t>() : cells[i]);
     json away = away_from_singular(comm, s, env, dim, &pts[i]);
     away.erase("radius_m");
     faces[name] = {{"max_principal_tension_mpa",

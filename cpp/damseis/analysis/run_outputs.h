@@ -52,12 +52,16 @@ void write_rows_csv(MPI_Comm comm, const std::vector<double>& local,
 /// Writes the envelope values of the given owned points of every rank into
 /// a CSV file on rank 0; with `joint_sides` (one per point: -1 on the side
 /// 1 of a contact joint, 1 on side 2, 0 elsewhere) a column joint_side, so
-/// that plots can draw each block apart (contours break across joints).
+/// that plots can draw each block apart (contours break across joints);
+/// with `cells` (one per point: the global index of the cell holding it,
+/// for quadrature points) a column cell, so that plots can draw a cell's
+/// points as one value.
 void write_face_csv(MPI_Comm comm, const results::StressEnvelope& env,
                     std::span<const std::int32_t> points,
                     std::span<const std::array<double, 3>> singular,
                     const std::filesystem::path& file,
-                    std::span<const std::int8_t> joint_sides = {});
+                    std::span<const std::int8_t> joint_sides = {},
+                    std::span<const std::int64_t> cells = {});
 
 /// Post-processes the crest history (per step: crest then base displacement
 /// components, already reduced over ranks): writes crest.csv (relative to
@@ -107,11 +111,13 @@ void print_summary_line(MPI_Comm comm, const nlohmann::json& summary,
                         const std::string& extra = "");
 
 /// Per-face envelope tables (face_<name>.csv) and summary entries;
-/// `joint_sides` (may be empty): per face, per point, as write_face_csv.
+/// `joint_sides` and `cells` (may be empty): per face, per point, as
+/// write_face_csv.
 nlohmann::json
 write_faces(MPI_Comm comm, const SeismicSettings& s,
             const results::StressEnvelope& env,
             const std::vector<std::vector<std::int32_t>>& pts, int dim,
             const std::filesystem::path& out_dir,
-            const std::vector<std::vector<std::int8_t>>& joint_sides = {});
+            const std::vector<std::vector<std::int8_t>>& joint_sides = {},
+            const std::vector<std::vector<std::int64_t>>& cells = {});
 } // namespace damseis::analysis

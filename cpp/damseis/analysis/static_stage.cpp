@@ -16,9 +16,10 @@ void load_at(double lambda, Vec F_g, Vec F_static, Vec F)
   VecAXPBYPCZ(F, 1.0 - lambda, lambda, 0.0, F_g, F_static);
 }
 
-/// Dynamic relaxation from the committed state at load factor `from` to the
-/// full load (see static_stage.h); returns the steps taken and the final
-/// largest speed. u: the state at `from` on entry, the relaxed one on exit.
+/// Dynamic relaxation from the committed state at load factor `from` of
+/// the loading F_g -> F_static to its full load (see static_stage.h);
+/// returns the steps taken and the final largest speed. u: the state at
+/// `from` on entry, the relaxed one on exit.
 std::pair<int, double> relax(ConcreteSystem& system, Mat K, Mat M, Vec F_g,
                              Vec F_static, double from, Vec u,
                              const StaticStageSettings& s)
@@ -76,83 +77,100 @@ nlohmann::json StaticStageReport::to_json() const
   return {{"newton_iterations", iterations},
           {"cuts", cuts},
           {"load_controlled_factor", load_controlled_factor},
+          {"dead_weight_load_controlled_factor", dead_weight_factor},
           {"dynamic_relaxation_steps", relaxation_steps},
           {"dynamic_relaxation_final_speed_m_per_s", relaxation_final_speed}};
 }
 
-StaticStageReport solve_static_stage(ConcreteSystem& system, Mat K, Mat M,
-                                     Vec F_g, Vec F_static, Vec u,
-                                     const StaticStageSettings& s)
+namespace
+{
+/// One loading of the static stage: from F_a (committed, u) to F_b in
+/// `increments` under load control up to `relax_from`, then, if Newton
+/// stops or at relax_from, dynamic relaxation and a Newton solve at F_b.
+/// Returns the load factor reached under load control.
+double load_stage(ConcreteSystem& system, Mat K, Mat M, Vec F_a, Vec F_b,
+                  int increments, double relax_from, const std::string& what,
+                  Vec u, const StaticStageSettings& s,
+                  StaticStageReport& report)
 {
   MPI_Comm comm;
   PetscObjectGetComm(reinterpret_cast<PetscObject>(K), &comm);
-  StaticStageReport report;
   auto add = [&](const dynamics::StepReport& r)
   {
     report.iterations += r.iterations;
     report.cuts += r.cuts;
   };
-  Vector zero = linalg::column_vector(K);
-  VecSet(u, 0.0);
-  add(dynamics::solve_static(system, K, zero.vec(), F_g, 1, u, s.newton,
-                             s.factorization));
-  // Load control up to relax_from (the loads after the dead weight).
+  // Load control up to relax_from.
   Vector F_part = linalg::column_vector(K);
-  Vec F_to = F_static;
-  if (s.relax_from < 1.0)
+  Vec F_to = F_b;
+  if (relax_from < 1.0)
   {
-    load_at(s.relax_from, F_g, F_static, F_part.vec());
+    load_at(relax_from, F_a, F_b, F_part.vec());
     F_to = F_part.vec();
   }
+  double reached = 1.0;
   try
   {
-    add(dynamics::solve_static(system, K, F_g, F_to, s.increments, u, s.newton,
+    add(dynamics::solve_static(system, K, F_a, F_to, increments, u, s.newton,
                                s.factorization));
-    if (s.relax_from >= 1.0)
-      return report;
-    report.load_controlled_factor = s.relax_from;
+    if (relax_from >= 1.0)
+      return 1.0;
+    reached = relax_from;
   }
   catch (const dynamics::StaticStepFailure& e)
   {
     add(e.report);
-    report.load_controlled_factor = e.reached * std::min(1.0, s.relax_from);
+    reached = e.reached * std::min(1.0, relax_from);
     std::ostringstream line;
     line.precision(4);
-    line << "static stage: under load control Newton stops at "
-         << report.load_controlled_factor
-         << " of the loads after the dead weight (" << e.what()
+    line << "static stage: under load control Newton stops at " << reached
+         << " of " << what << " (" << e.what()
          << "); the rest is applied by dynamic relaxation (critically "
             "damped, ramp "
          << s.ramp_periods << " and hold " << s.hold_periods
          << " fundamental periods)";
     results::print(comm, line.str());
   }
-  const auto [steps, speed] =
-      relax(system, K, M, F_g, F_static, report.load_controlled_factor, u, s);
-  report.relaxation_steps = steps;
-  report.relaxation_final_speed = speed;
+  const auto [steps, speed] = relax(system, K, M, F_a, F_b, reached, u, s);
+  report.relaxation_steps += steps;
+  report.relaxation_final_speed =
+      std::max(report.relaxation_final_speed, speed);
   // The equilibrium at the full load from the relaxed state (solve_static
   // needs distinct start and end loads).
   Vector start = linalg::column_vector(K);
-  VecCopy(F_static, start.vec());
+  VecCopy(F_b, start.vec());
   try
   {
-    add(dynamics::solve_static(system, K, start.vec(), F_static, 1, u, s.newton,
+    add(dynamics::solve_static(system, K, start.vec(), F_b, 1, u, s.newton,
                                s.factorization));
   }
   catch (const dynamics::StepFailure& e)
   {
-    throw dynamics::StepFailure(
-        std::string("static stage: no equilibrium under the full static "
-                    "loads after dynamic relaxation (") +
-        e.what() + ")");
+    throw dynamics::StepFailure("static stage: no equilibrium under " + what +
+                                " after dynamic relaxation (" + e.what() + ")");
   }
   std::ostringstream line;
   line.precision(3);
-  line << "static stage: relaxed in " << steps
+  line << "static stage: " << what << " relaxed in " << steps
        << " steps (largest speed at the end " << speed
        << " m/s), equilibrium at the full load found";
   results::print(comm, line.str());
+  return reached;
+}
+} // namespace
+
+StaticStageReport solve_static_stage(ConcreteSystem& system, Mat K, Mat M,
+                                     Vec F_g, Vec F_static, Vec u,
+                                     const StaticStageSettings& s)
+{
+  StaticStageReport report;
+  Vector zero = linalg::column_vector(K);
+  VecSet(u, 0.0);
+  report.dead_weight_factor = load_stage(system, K, M, zero.vec(), F_g, 1, 1.0,
+                                         "the dead weight", u, s, report);
+  report.load_controlled_factor =
+      load_stage(system, K, M, F_g, F_static, s.increments, s.relax_from,
+                 "the loads after the dead weight", u, s, report);
   return report;
 }
 } // namespace damseis::analysis

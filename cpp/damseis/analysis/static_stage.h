@@ -12,7 +12,9 @@
 // `hold_periods` more, so that the crack jumps as it would under a slow
 // loading and arrests; a static Newton solve at the full load from the
 // relaxed state then gives the equilibrium that the dynamic stage starts
-// from. If that fails too, the static loads have no equilibrium.
+// from. If that fails too, the static loads have no equilibrium. The dead
+// weight, applied first in one increment, falls back the same way (a
+// monolithic arch dam on a coarse mesh can crack under its own weight).
 #pragma once
 
 #include "concrete_system.h"
@@ -43,8 +45,10 @@ struct StaticStageReport
   /// Load factor of the loads after the dead weight reached by Newton under
   /// load control (1: no relaxation was needed).
   double load_controlled_factor = 1.0;
-  int relaxation_steps = 0;
-  /// Largest |v| at the end of the hold [m/s] (0 without relaxation).
+  /// The same for the dead weight (applied in one increment).
+  double dead_weight_factor = 1.0;
+  int relaxation_steps = 0; ///< both loadings
+  /// Largest |v| at the end of a hold [m/s] (0 without relaxation).
   double relaxation_final_speed = 0.0;
   nlohmann::json to_json() const;
 };

@@ -142,7 +142,7 @@ ConcreteModel::ConcreteModel(
   const auto& gdofs = mesh->geometry().dofmap();
   std::map<std::pair<int, int>, std::int32_t> bins;
   _cell_material.resize(_num_cells);
-  std::int64_t reduced_local = 0;
+  std::int64_t reduced_local = 0, raised_local = 0;
   for (std::int32_t c = 0; c < _num_cells; ++c)
   {
     const int r = region[c];
@@ -205,7 +205,13 @@ ConcreteModel::ConcreteModel(
       _reduced_ft[0] = std::min(_reduced_ft[0], ft);
       _reduced_ft[1] = std::max(_reduced_ft[1], ft);
     }
+    if (c < _num_owned_cells &&
+        _dynamic[pos->second]->parameters().mode != material::Mode::elastic &&
+        _dynamic[pos->second]->derived().tension_energy_raised)
+      ++raised_local;
   }
+  MPI_Allreduce(&raised_local, &_raised_cells, 1, MPI_INT64_T, MPI_SUM,
+                mesh->comm());
   MPI_Allreduce(&reduced_local, &_reduced_cells, 1, MPI_INT64_T, MPI_SUM,
                 mesh->comm());
   _reduced_ft[1] = -_reduced_ft[1];

@@ -154,6 +154,13 @@ public:
   {
     return _reduced_ft;
   }
+  /// Cells as large, whose tensile strength was kept and whose softening
+  /// dissipates more than Gf per unit crack area (TensionSoftening::
+  /// crack_band_keep_strength), all ranks.
+  std::int64_t cells_with_raised_tensile_energy() const
+  {
+    return _raised_cells;
+  }
 
 private:
   /// The in-plane 3x3 tangent (xx, yy, xy) of a 6x6 one into ct (plane
@@ -245,7 +252,7 @@ private:
   std::vector<double> _sig_committed, _coords, _strain_values;
   std::array<std::vector<double>, 5> _out;
   double _trial_dt = 0.0;
-  std::int64_t _reduced_cells = 0;
+  std::int64_t _reduced_cells = 0, _raised_cells = 0;
   std::array<double, 2> _reduced_ft = {HUGE_VAL, -HUGE_VAL};
   // IMPL-EX: the plastic strain increment of the last accepted dynamic step
   // per point, and that step's length (0: none yet, no extrapolation).

@@ -268,6 +268,19 @@ void add_plastic_strain(Vector6& ep, const Vector6& tr, const Vector6& s,
 }
 } // namespace
 
+std::string to_string(TensionSoftening s)
+{
+  switch (s)
+  {
+  case TensionSoftening::crack_band_keep_strength:
+    return "crack_band_keep_strength";
+  case TensionSoftening::none:
+    return "none";
+  default:
+    return "crack_band";
+  }
+}
+
 std::string active_set_name(unsigned a)
 {
   if (a == 0)
@@ -339,18 +352,35 @@ HtcConcrete::HtcConcrete(const ConcreteParameters& p) : _p(p)
   // modulus at the peak is ft0^2 h / Gf; it must stay below E (no snap-back
   // of the uniaxial stress-strain curve, i.e. h < l_ch = E Gf / ft0^2 for
   // exponential softening; 2 l_ch is the linear-softening limit). If not,
-  // ft0 is lowered so that the modulus is E / snap_back_safety: the energy
-  // is still Gf / h (algorithms.md 1.3 remedy).
+  // either ft0 is lowered so that the modulus is E / snap_back_safety: the
+  // energy is still Gf / h (algorithms.md 1.3 remedy); or ft0 is kept and
+  // the modulus set to E / snap_back_safety: the energy per unit volume is
+  // then snap_back_safety ft0^2 / E > Gf / h (as in compression below); or
+  // there is no softening at all.
   const double h = p.element_size;
   _d.l_ch = _d.E * p.Gf / (ft0 * ft0);
   _d.ft0 = ft0;
   _d.tension_strength_reduced = false;
-  if (ft0 * ft0 * h / p.Gf > _d.E / p.snap_back_safety)
+  _d.tension_energy_raised = false;
+  double Gf = p.Gf;
+  if (p.tension_softening != TensionSoftening::none &&
+      ft0 * ft0 * h / p.Gf > _d.E / p.snap_back_safety)
   {
-    _d.ft0 = std::sqrt(_d.E * p.Gf / (p.snap_back_safety * h));
-    _d.tension_strength_reduced = true;
+    if (p.tension_softening == TensionSoftening::crack_band)
+    {
+      _d.ft0 = std::sqrt(_d.E * p.Gf / (p.snap_back_safety * h));
+      _d.tension_strength_reduced = true;
+    }
+    else
+    {
+      Gf = p.snap_back_safety * ft0 * ft0 * h / _d.E;
+      _d.tension_energy_raised = true;
+    }
   }
-  _d.kappa_tu = c23 * p.Gf / (h * _d.ft0);
+  // No softening: Ht = exp(-kappa_t / inf) = 1 and its derivative 0.
+  _d.kappa_tu = p.tension_softening == TensionSoftening::none
+                    ? HUGE_VAL
+                    : c23 * Gf / (h * _d.ft0);
 
   // Compression: Hc = max(exp(-kappa_c / kappa_cs), floor). In uniaxial
   // compression the flow sits on the compressive-meridian edge (symmetric

@@ -29,6 +29,24 @@ enum class Mode
   viscoplastic ///< consistency viscoplasticity: R(kappa_dot), hbar = h + s/dt
 };
 
+/// How the tensile strength softens after cracking.
+enum class TensionSoftening
+{
+  /// Exponential softening dissipating Gf per unit crack area (crack band,
+  /// h = element size); an element larger than the snap-back limit gets a
+  /// lower ft0 so that the energy stays Gf / h.
+  crack_band,
+  /// The same, but an element larger than the snap-back limit keeps ft0 and
+  /// softens as steeply as the limit allows (energy above Gf / h).
+  crack_band_keep_strength,
+  /// None: perfectly plastic in tension (Ht = 1; no localisation, no mesh
+  /// size in the law).
+  none
+};
+
+/// "crack_band", "crack_band_keep_strength" or "none".
+std::string to_string(TensionSoftening s);
+
 /// Material data. Strengths are static values; dynamic_30_percent applies
 /// the Chinese-specification convention used by the paper (E, fc0, ft0 x
 /// dynamic_factor).
@@ -59,6 +77,8 @@ struct ConcreteParameters
   double compressive_floor = 1e-3;
   /// Softening moduli are limited to E / snap_back_safety (see README).
   double snap_back_safety = 1.25;
+  /// The tension softening (see TensionSoftening).
+  TensionSoftening tension_softening = TensionSoftening::crack_band;
   Mode mode = Mode::viscoplastic;
   RateLaw rate_law = RateLaw::ceb_fip;
   double eta_c = 0.0, eta_t = 0.0; ///< linear rate law viscosities [s]
@@ -125,6 +145,7 @@ struct DerivedProperties
   double kappa_tu, kappa_cs;      ///< softening scales of Ht, Hc
   double l_ch;                    ///< E Gf / ft0^2 with the nominal ft0 [m]
   bool tension_strength_reduced;  ///< h too large: ft0 lowered (snap-back)
+  bool tension_energy_raised;     ///< h too large: ft0 kept, energy > Gf / h
   bool compression_energy_raised; ///< h too large: Gc/h not reachable
   double uniaxial_compression_dissipation; ///< k_c = |deps_p,axial|/dkappa_c
   RateFunction rate_c, rate_t;

@@ -64,4 +64,28 @@ face_points(const dolfinx::fem::FunctionSpace& S,
   points.erase(std::unique(points.begin(), points.end()), points.end());
   return points;
 }
+
+std::vector<std::int64_t>
+face_point_cells(const dolfinx::fem::FunctionSpace& S,
+                 const dolfinx::mesh::MeshTags<std::int32_t>& facet_tags,
+                 const std::vector<int>& tags,
+                 std::span<const std::int32_t> points)
+{
+  auto mesh = S.mesh();
+  auto cell_map = mesh->topology().index_map(mesh->topology().dim());
+  std::vector<std::int64_t> cells(points.size(), -1);
+  for_each_face_point(
+      S, facet_tags, tags, false,
+      [&](std::int32_t, std::int32_t c, std::int32_t p)
+      {
+        auto it = std::lower_bound(points.begin(), points.end(), p);
+        if (it != points.end() && *it == p)
+        {
+          std::int64_t global = 0;
+          cell_map->local_to_global(std::span(&c, 1), std::span(&global, 1));
+          cells[it - points.begin()] = global;
+        }
+      });
+  return cells;
+}
 } // namespace damseis::results

@@ -5,6 +5,7 @@
 #include <dolfinx/fem/FunctionSpace.h>
 #include <dolfinx/mesh/MeshTags.h>
 #include <functional>
+#include <span>
 #include <vector>
 
 namespace damseis::results
@@ -30,4 +31,12 @@ std::vector<std::int32_t>
 face_points(const dolfinx::fem::FunctionSpace& S,
             const dolfinx::mesh::MeshTags<std::int32_t>& facet_tags,
             const std::vector<int>& tags, bool vertex_points = true);
+
+/// Per point of `points` (as face_points gives them for the same S, tags
+/// and vertex_points = false): the global index of the cell holding it.
+std::vector<std::int64_t>
+face_point_cells(const dolfinx::fem::FunctionSpace& S,
+                 const dolfinx::mesh::MeshTags<std::int32_t>& facet_tags,
+                 const std::vector<int>& tags,
+                 std::span<const std::int32_t> points);
 } // namespace damseis::results

@@ -1,0 +1,26 @@
+// The paper's Table 1 (section I): the largest principal compression and
+// tension per concrete model (elastic, plastic, viscoplastic), and per
+// reservoir level where a study runs several, as table1.csv and table1.md.
+#pragma once
+
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace damseis::analysis
+{
+/// One run of a Table 1 study: its model, its reservoir level (NaN: the
+/// study has one level and the tables no level column) and its summary.
+struct Table1Run
+{
+  std::string model;
+  double level_m = std::nan("");
+  nlohmann::json summary;
+};
+
+/// table1.csv and table1.md in out_dir (call on one rank).
+void write_table1(const std::vector<Table1Run>& runs,
+                  const std::filesystem::path& out_dir);
+} // namespace damseis::analysis
