@@ -38,7 +38,6 @@ expect arch_study_repeated_joint 'arch_dam\.toml.*study\.joints.*"DGD".*repeated
 expect arch_foundation_study_with_joint_study 'arch_dam\.toml.*study\.foundation.*study\.joints' --set study.foundation=true --set 'study.joints=[none, DGJ]'
 expect arch_foundation_ratios_empty 'arch_dam\.toml.*study\.foundation_ratios.*empty' --set study.foundation=true --set 'study.foundation_ratios=[]'
 expect arch_rock_density_implausible 'arch_dam\.toml.*rock\.rho' --set rock.rho=1e9
-expect arch_levels_without_table1 'arch_dam\.toml.*study\.reservoir_levels.*study\.table1' --set 'study.reservoir_levels=[70]'
 expect arch_table1_level_at_crest 'arch_dam\.toml.*study\.reservoir_levels.*crest' --set study.table1=true --set 'study.reservoir_levels=[100, 101.5]'
 expect arch_table1_with_joint_study 'arch_dam\.toml.*study\.table1.*one study at a time' --set study.table1=true --set 'study.joints=[none, DGJ]'
 expect arch_table1_with_contact 'arch_dam\.toml.*study\.table1.*contact' --set study.table1=true --set joints.model=contact

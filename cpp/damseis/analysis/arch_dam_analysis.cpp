@@ -176,7 +176,7 @@ nlohmann::json run_arch_table1_study(MPI_Comm comm, const ArchDamConfig& cfg,
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   if (rank == 0)
-    write_table1(runs, out_dir);
+    write_table1(runs, out_dir, true);
   return runs.back().summary;
 }
 } // namespace damseis::analysis

@@ -84,7 +84,8 @@ input::Schema arch_dam_schema()
             "table1.csv/.md (the paper's Table 1)");
   s.real_array("study.reservoir_levels", "[]", "m",
                "reservoir levels of study.table1 above the crown's base, "
-               "e.g. [275, 180] ([]: reservoir.level only)")
+               "e.g. [275, 180] ([]: reservoir.level only; unused without "
+               "study.table1)")
       .at_least(0);
   add_seismic_keys(s, arch_dam_directions(), "[]", "[]");
   return s;
@@ -166,13 +167,10 @@ void read_table1_study(const input::Case& c, ArchDamConfig& a, double h)
 {
   a.table1 = c.boolean("study.table1");
   a.table1_levels = c.reals("study.reservoir_levels");
+  // (With study.table1 = false the levels stay unused: the study's case
+  // file runs one model so.)
   if (!a.table1)
-  {
-    if (!a.table1_levels.empty())
-      c.fail("study.reservoir_levels", "is given without study.table1",
-             "study.table1 = true, or remove study.reservoir_levels");
     return;
-  }
   if (a.table1_levels.empty())
     a.table1_levels = {a.seismic.reservoir.level};
   for (double level : a.table1_levels)

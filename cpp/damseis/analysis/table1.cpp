@@ -4,21 +4,49 @@
 
 namespace damseis::analysis
 {
+namespace
+{
+/// The largest compression (most negative) and tension away from the
+/// singular points: of the dam, or over the faces.
+std::pair<double, double> away_extremes(const nlohmann::json& s, bool faces)
+{
+  const std::string C = "max_principal_compression_mpa",
+                    T = "max_principal_tension_mpa";
+  if (!faces)
+  {
+    const auto& away = s["away_from_singular_points"];
+    return {away[C]["value"], away[T]["value"]};
+  }
+  double c = 0.0, t = 0.0;
+  for (const auto& [name, f] : s["faces"].items())
+  {
+    const auto& away = f["away_from_singular_points"];
+    c = std::min(c, away[C]["value"].get<double>());
+    t = std::max(t, away[T]["value"].get<double>());
+  }
+  return {c, t};
+}
+} // namespace
+
 void write_table1(const std::vector<Table1Run>& runs,
-                  const std::filesystem::path& out_dir)
+                  const std::filesystem::path& out_dir, bool faces)
 {
   std::ofstream csv(out_dir / "table1.csv"), md(out_dir / "table1.md");
   const bool levels = !runs.empty() && !std::isnan(runs.front().level_m);
   const double radius =
       runs.front().summary["away_from_singular_points"]["radius_m"];
+  const std::string away = faces ? "_faces_away_mpa" : "_away_mpa";
   csv << (levels ? "reservoir_level_m," : "")
-      << "model,max_compression_mpa,max_tension_mpa,"
-         "max_compression_away_mpa,max_tension_away_mpa,"
+      << "model,max_compression_mpa,max_tension_mpa,max_compression" << away
+      << ",max_tension" << away
+      << ","
          "crest_displacement_cm,max_kappa_t,max_strain_rate_per_s,"
          "newton_iterations_per_step,seconds_per_step,material_integration\n";
   md << std::setprecision(3) << (levels ? "| Reservoir level (m) " : "")
-     << "| Model | Compression (MPa) | Tension (MPa) | Compression > " << radius
-     << " m from corners (MPa) | Tension > " << radius
+     << "| Model | Compression (MPa) | Tension (MPa) | Compression"
+     << (faces ? " on the faces" : "") << " > " << radius
+     << " m from corners (MPa) | Tension" << (faces ? " on the faces" : "")
+     << " > " << radius
      << " m from corners (MPa) | Crest displacement (cm) | max kappa_t | "
         "max strain rate (1/s) | Newton it./step | s/step | integration |\n"
      << (levels ? "|---" : "")
@@ -27,9 +55,7 @@ void write_table1(const std::vector<Table1Run>& runs,
   {
     const double c = s["max_principal_compression_mpa"]["value"];
     const double t = s["max_principal_tension_mpa"]["value"];
-    const auto& away = s["away_from_singular_points"];
-    const double ca = away["max_principal_compression_mpa"]["value"];
-    const double ta = away["max_principal_tension_mpa"]["value"];
+    const auto [ca, ta] = away_extremes(s, faces);
     const double u =
         s["crest_displacement_max_m"]["value"].get<double>() * 100.0;
     const double kt = s["max_kappa_t"]["value"];

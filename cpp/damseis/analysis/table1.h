@@ -20,7 +20,11 @@ struct Table1Run
   nlohmann::json summary;
 };
 
-/// table1.csv and table1.md in out_dir (call on one rank).
+/// table1.csv and table1.md in out_dir (call on one rank). The columns
+/// "away from corners" take the extremes farther than the singular radius
+/// from the singular points: of the whole dam, or (`faces`: a 3D dam,
+/// whose base points next to the rock are not singular points but carry
+/// its concentration) of the faces.
 void write_table1(const std::vector<Table1Run>& runs,
-                  const std::filesystem::path& out_dir);
+                  const std::filesystem::path& out_dir, bool faces = false);
 } // namespace damseis::analysis
