@@ -6,7 +6,8 @@
 # a nonlinear concrete (extra --set arguments), every column of
 # dam_points.csv (state, strain-rate and vertical-stress envelopes), all to
 # the digits written.
-# Usage: restart_matches.sh KOYNA PYTHON [--set k=v ...]
+# Usage: restart_matches.sh DEMO PYTHON [--set k=v ...] (koyna defaults:
+# a 4 m mesh, 3 s; the --set arguments come last and override them)
 set -eu
 exe=$1 python=$2
 shift 2

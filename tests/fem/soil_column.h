@@ -1,9 +1,10 @@
 // Helpers of the soil-column tests of transmitting boundaries
-// (test_viscous_boundary, test_mtf_boundary): the input pulse and the value
-// at a node.
+// (test_viscous_boundary, test_mtf_boundary): the input pulse, the value
+// at a node, and the march that measures a column's errors.
 #pragma once
 
 #include "fem_test_support.h"
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -47,5 +48,33 @@ inline double node_value(const dolfinx::fem::FunctionSpace& V, Vec x,
       v = a[bs * i + c];
   VecRestoreArrayRead(x, &a);
   return global_sum(v);
+}
+
+/// A soil column's errors relative to the pulse's peak A.
+struct ColumnErrors
+{
+  double surface = 0.0;  ///< max over the steps |u(top) - exact(k)| / A
+  double residual = 0.0; ///< max |u| in the column at the end / A
+};
+
+/// Runs `step(k)` (the load of step k assembled, the integrator advanced)
+/// for k = 1..steps and measures component c of the displacement u at the
+/// node `top` against exact(k); then the residual motion (collective).
+template <class Step, class Exact>
+ColumnErrors march_column(const dolfinx::fem::FunctionSpace& V, Vec u,
+                          const Point& top, int c, int steps, double A,
+                          Step step, Exact exact)
+{
+  ColumnErrors e;
+  for (int k = 1; k <= steps; ++k)
+  {
+    step(k);
+    e.surface =
+        std::max(e.surface, std::abs(node_value(V, u, top, c) - exact(k)) / A);
+  }
+  double umax = 0.0;
+  VecNorm(u, NORM_INFINITY, &umax);
+  e.residual = umax / A;
+  return e;
 }
 } // namespace damseis::test

@@ -124,18 +124,16 @@ ColumnResult run_column(int c, double T, int degree, int order, int layers,
   PVec zero = linalg::column_vector(K.mat());
   load.assemble(0, f.vec());
   newmark.set_state(zero.vec(), zero.vec(), zero.vec(), f.vec(), nullptr, 0);
-  const Point top = {W / 2, 0, 0};
-  for (int k = 1; k <= steps; ++k)
-  {
-    load.assemble(k, f.vec());
-    newmark.step(f.vec());
-    const double u = node_value(*fe.V(), newmark.u(), top, c);
-    const double exact = pulse(A, T, k * dt - delay_s);
-    r.surface_error = std::max(r.surface_error, std::abs(u - exact) / A);
-  }
-  double umax = 0.0;
-  VecNorm(newmark.u(), NORM_INFINITY, &umax);
-  r.residual = umax / A;
+  const ColumnErrors e = march_column(
+      *fe.V(), newmark.u(), {W / 2, 0, 0}, c, steps, A,
+      [&](int k)
+      {
+        load.assemble(k, f.vec());
+        newmark.step(f.vec());
+      },
+      [&](int k) { return pulse(A, T, k * dt - delay_s); });
+  r.surface_error = e.surface;
+  r.residual = e.residual;
   return r;
 }
 } // namespace

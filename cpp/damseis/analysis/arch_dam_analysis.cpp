@@ -146,6 +146,7 @@ nlohmann::json arch_dam_results(MPI_Comm comm, const ArchDamConfig& cfg,
   }
   return summary;
 }
+
 nlohmann::json run_arch_table1_study(MPI_Comm comm, const ArchDamConfig& cfg,
                                      const std::filesystem::path& out_dir,
                                      const ArchDamRun& analyse)

@@ -169,11 +169,8 @@ LinearSeismicAnalysis::LinearSeismicAnalysis(fem::ElasticModel& fe,
 
 void LinearSeismicAnalysis::set_up_wave_foundation(Mat K)
 {
-  if (_loads.initial_velocity)
-    throw std::invalid_argument(
-        "a foundation with mass and a transmitting boundary does not yet "
-        "take an initial velocity");
-  IncidentWaves waves = incident_waves(_fe, _s, *_wave);
+  IncidentWaves waves =
+      incident_waves(_fe, _s, *_wave, _loads.initial_velocity != nullptr);
   _ground = std::move(waves.ground);
   _free_field = std::move(waves.field);
   if (_wave->mtf)

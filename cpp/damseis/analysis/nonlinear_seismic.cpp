@@ -339,19 +339,27 @@ void print_crack_band_notes(MPI_Comm comm, const fem::ElasticModel& fe,
                        "part of its points: 0.75 Gf in the crack-band test); "
                        "use mesh.order = 1 for softening studies");
   }
-  if (cm.cells_with_raised_tensile_energy() > 0)
+  // "note: N of M dam cells are larger than ... (snap-back limit ...): "
+  auto large_cells = [&](std::int64_t n)
   {
     std::ostringstream note;
     note.precision(3);
-    note << "note: " << cm.cells_with_raised_tensile_energy() << " of "
+    note << "note: " << n << " of "
          << region_cell_count(comm, fe.model(), regions)
          << " dam cells are larger than E Gf / ("
          << concrete.params.snap_back_safety
          << " ft^2) = " << concrete_characteristic_length(concrete)
-         << " m (snap-back limit of the softening): their tensile strength "
-            "is kept (concrete.tension_softening = "
-            "\"crack_band_keep_strength\") and a crack "
-            "in a cell of size h dissipates "
+         << " m (snap-back limit of the softening): ";
+    return note.str();
+  };
+  if (cm.cells_with_raised_tensile_energy() > 0)
+  {
+    std::ostringstream note;
+    note.precision(3);
+    note << large_cells(cm.cells_with_raised_tensile_energy())
+         << "their tensile strength is kept (concrete.tension_softening = "
+            "\"crack_band_keep_strength\") and a crack in a cell of size h "
+            "dissipates "
          << concrete.params.snap_back_safety << " ft^2 h / E per unit area, "
          << "more than Gf = " << concrete.params.Gf << " N/m";
     results::print(comm, note.str());
@@ -361,15 +369,10 @@ void print_crack_band_notes(MPI_Comm comm, const fem::ElasticModel& fe,
   const auto ft_low = cm.reduced_tensile_strength_range();
   std::ostringstream note;
   note.precision(3);
-  note << "note: " << cm.cells_with_reduced_strength() << " of "
-       << region_cell_count(comm, fe.model(), regions)
-       << " dam cells are larger than E Gf / ("
-       << concrete.params.snap_back_safety
-       << " ft^2) = " << concrete_characteristic_length(concrete)
-       << " m (snap-back "
-       << "limit of the softening): their tensile strength is lowered "
-       << "from " << concrete.params.ft0 * 1e-6 << " to " << ft_low[0] * 1e-6
-       << ".." << ft_low[1] * 1e-6
+  note << large_cells(cm.cells_with_reduced_strength())
+       << "their tensile strength is lowered from "
+       << concrete.params.ft0 * 1e-6 << " to " << ft_low[0] * 1e-6 << ".."
+       << ft_low[1] * 1e-6
        << " MPa (the crack band is not honoured there; summary.json "
           "concrete.cells_with_reduced_tensile_strength); refine the mesh "
           "where the concrete cracks, or see concrete.tension_softening";
@@ -499,11 +502,7 @@ void ConcreteSeismicAnalysis::set_up_viscous_spring()
   if (_wave->mtf)
     throw std::invalid_argument("the multi-transmitting boundary is not yet "
                                 "available with HTC concrete");
-  if (_loads.initial_velocity)
-    throw std::invalid_argument(
-        "a foundation with mass and a transmitting boundary does not yet "
-        "take an initial velocity");
-  _waves = incident_waves(_fe, _s, *_wave);
+  _waves = incident_waves(_fe, _s, *_wave, _loads.initial_velocity != nullptr);
   _vs = viscous_spring_parts(_fe, _s, *_wave, *_waves.field, _tie);
   // The springs: in K0 (system unknowns) and, as linear supports, in the
   // internal force of the dofs the material sees (all of them with ties).

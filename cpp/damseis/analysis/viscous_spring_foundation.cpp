@@ -1,14 +1,20 @@
 #include "viscous_spring_foundation.h"
 #include <damseis/fem/tied_dofs.h>
 #include <damseis/results/progress.h>
+#include <stdexcept>
 
 namespace damseis::analysis
 {
 using dolfinx::la::petsc::Matrix;
 
 IncidentWaves incident_waves(const fem::ElasticModel& fe,
-                             const SeismicSettings& s, const WaveFoundation& w)
+                             const SeismicSettings& s, const WaveFoundation& w,
+                             bool initial_velocity)
 {
+  if (initial_velocity)
+    throw std::invalid_argument(
+        "a foundation with mass and a transmitting boundary does not yet "
+        "take an initial velocity");
   IncidentWaves waves;
   waves.ground = std::make_unique<geometry::GroundSurface>(
       fe.model(), s.dam_regions, w.boundary_tags);

@@ -20,9 +20,12 @@ struct IncidentWaves
   std::shared_ptr<const boundary::FreeField> field;
 };
 
-/// Collective.
+/// Collective. Throws std::invalid_argument with an initial velocity
+/// (`initial_velocity`: the run has one), which these loads do not yet
+/// take.
 IncidentWaves incident_waves(const fem::ElasticModel& fe,
-                             const SeismicSettings& s, const WaveFoundation& w);
+                             const SeismicSettings& s, const WaveFoundation& w,
+                             bool initial_velocity);
 
 /// A viscous-spring boundary: springs and dashpots on the system's unknowns
 /// (all dofs, or with `tie` the tied unknowns u = P u_r: P^T A P).

@@ -154,8 +154,8 @@ public:
   {
     return _reduced_ft;
   }
-  /// Cells as large, whose tensile strength was kept and whose softening
-  /// dissipates more than Gf per unit crack area (TensionSoftening::
+  /// Cells as large whose tensile strength was kept, their softening
+  /// dissipating more than Gf per unit crack area (TensionSoftening::
   /// crack_band_keep_strength), all ranks.
   std::int64_t cells_with_raised_tensile_energy() const
   {
