@@ -23,19 +23,22 @@ PetscErrorCode petsc_error(MPI_Comm, int line, const char* fun,
                              "): " + (mess ? mess : ""));
 }
 
-/// True if `dir` (or, for a study, one of its subfolders) holds a
-/// checkpoint.
-bool has_checkpoint(const std::filesystem::path& dir)
+/// True if `dir` or, for a study, one of its runs' folders holds a
+/// checkpoint (a run's folder is one or two levels down: <set>, or
+/// level_<m>/<model> and ratio_<r>/<model>).
+bool has_checkpoint(const std::filesystem::path& dir, int depth = 2)
 {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (fs::exists(dir / "checkpoint" / "checkpoint.json", ec))
     return true;
+  if (depth == 0)
+    return false;
   for (auto it = fs::directory_iterator(dir, ec);
        !ec && it != fs::directory_iterator(); it.increment(ec))
   {
-    if (it->is_directory(ec) &&
-        fs::exists(it->path() / "checkpoint" / "checkpoint.json", ec))
+    if (it->is_directory(ec) && it->path().filename() != "checkpoint" &&
+        has_checkpoint(it->path(), depth - 1))
       return true;
   }
   return false;
