@@ -109,6 +109,21 @@ def read_face(path: Path) -> dict:
             for k, v in cols.items()}
 
 
+def face_x(d: dict, face: str):
+    """x in the picture of a face seen by an observer in front of it: the
+    downstream face is seen looking upstream, so the left bank (x < 0) is
+    on the right."""
+    return -d["x_m"] if face == "downstream" else d["x_m"]
+
+
+def label_face_axes(ax, face: str) -> None:
+    ax.set_aspect("equal")
+    ax.set_xlabel("x along the dam axis [m]"
+                  + (" (mirrored: seen from downstream)"
+                     if face == "downstream" else ""))
+    ax.set_ylabel("z [m]")
+
+
 def plot_face_maps(out: Path, summary: dict, suffix: str, panels, title: str,
                    png: str) -> None:
     """Maps of face envelopes, a row per face (face_<face><suffix>.csv),
@@ -118,9 +133,7 @@ def plot_face_maps(out: Path, summary: dict, suffix: str, panels, title: str,
     planes = joint_planes(out)
     for row, face in enumerate(("upstream", "downstream")):
         d = read_face(out / f"face_{face}{suffix}.csv")
-        # Observer in front of the face: the downstream face is seen looking
-        # upstream, so the left bank (x < 0) is on the right.
-        x = -d["x_m"] if face == "downstream" else d["x_m"]
+        x = face_x(d, face)
         # With contact joints each block is drawn apart: the contours break
         # across the joints (open or sliding, they carry no continuity).
         block = face_blocks(d, planes)
@@ -162,11 +175,7 @@ def plot_face_maps(out: Path, summary: dict, suffix: str, panels, title: str,
                 ax.set_title(f"{face} face: envelope of {what}\n"
                              f"extreme {e['value']:.2f} MPa at t = "
                              f"{e['t']:.2f} s{note}", fontsize=9)
-            ax.set_aspect("equal")
-            ax.set_xlabel("x along the dam axis [m]"
-                          + (" (mirrored: seen from downstream)"
-                             if face == "downstream" else ""))
-            ax.set_ylabel("z [m]")
+            label_face_axes(ax, face)
     fig.suptitle(f"{title} ({summary.get('stress', 'total')} stress)")
     fig.tight_layout()
     fig.savefig(out / png, dpi=120)
@@ -219,8 +228,7 @@ def plot_concrete_faces(out: Path, summary: dict) -> None:
     fig, axes = plt.subplots(2, 2, figsize=(13, 8))
     for row, face in enumerate(("upstream", "downstream")):
         d = read_face(out / f"face_{face}_concrete.csv")
-        x = -d["x_m"] if face == "downstream" else d["x_m"]
-        tri = face_triangulation(x, d["z_m"])
+        tri = face_triangulation(face_x(d, face), d["z_m"])
         rate = np.log10(np.maximum(d["max_strain_rate_per_s"], 1e-8))
         panels = ((rate, "log10 of the largest strain rate [1/s]",
                    f"max {d['max_strain_rate_per_s'].max():.3g} /s"),
@@ -235,11 +243,7 @@ def plot_concrete_faces(out: Path, summary: dict) -> None:
             fig.colorbar(cs, ax=ax, shrink=0.85)
             ax.set_title(f"{face} face: {what}\n{note} (cell means)",
                          fontsize=9)
-            ax.set_aspect("equal")
-            ax.set_xlabel("x along the dam axis [m]"
-                          + (" (mirrored: seen from downstream)"
-                             if face == "downstream" else ""))
-            ax.set_ylabel("z [m]")
+            label_face_axes(ax, face)
     rate = summary.get("max_strain_rate_per_s", {})
     fig.suptitle("HTC concrete: strain rate and cracking on the faces"
                  + (f" (largest strain rate in the dam {rate['value']:.3g} /s"

@@ -10,18 +10,18 @@ namespace
 {
 using dolfinx::la::petsc::Vector;
 
-/// F = (1 - lambda) F_g + lambda F_static.
-void load_at(double lambda, Vec F_g, Vec F_static, Vec F)
+/// F = (1 - lambda) F_a + lambda F_b.
+void load_at(double lambda, Vec F_a, Vec F_b, Vec F)
 {
-  VecAXPBYPCZ(F, 1.0 - lambda, lambda, 0.0, F_g, F_static);
+  VecAXPBYPCZ(F, 1.0 - lambda, lambda, 0.0, F_a, F_b);
 }
 
 /// Dynamic relaxation from the committed state at load factor `from` of
-/// the loading F_g -> F_static to its full load (see static_stage.h);
-/// returns the steps taken and the final largest speed. u: the state at
-/// `from` on entry, the relaxed one on exit.
-std::pair<int, double> relax(ConcreteSystem& system, Mat K, Mat M, Vec F_g,
-                             Vec F_static, double from, Vec u,
+/// the loading F_a -> F_b to its full load (see static_stage.h); returns
+/// the steps taken and the final largest speed. u: the state at `from` on
+/// entry, the relaxed one on exit.
+std::pair<int, double> relax(ConcreteSystem& system, Mat K, Mat M, Vec F_a,
+                             Vec F_b, double from, Vec u,
                              const StaticStageSettings& s)
 {
   MPI_Comm comm;
@@ -42,7 +42,7 @@ std::pair<int, double> relax(ConcreteSystem& system, Mat K, Mat M, Vec F_g,
       scheme, system, newton, s.factorization);
   Vector zero = linalg::column_vector(K), F = linalg::column_vector(K),
          fint = linalg::column_vector(K);
-  load_at(from, F_g, F_static, F.vec());
+  load_at(from, F_a, F_b, F.vec());
   system.internal_force(fint.vec());
   integrator.set_state(u, zero.vec(), zero.vec(), F.vec(), fint.vec());
   results::Progress progress(comm, ramp + hold);
@@ -50,7 +50,7 @@ std::pair<int, double> relax(ConcreteSystem& system, Mat K, Mat M, Vec F_g,
   {
     const double lambda =
         from + (1.0 - from) * std::min(1.0, static_cast<double>(k) / ramp);
-    load_at(lambda, F_g, F_static, F.vec());
+    load_at(lambda, F_a, F_b, F.vec());
     try
     {
       integrator.step(F.vec());

@@ -32,7 +32,7 @@ void write_table1(const std::vector<Table1Run>& runs,
                   const std::filesystem::path& out_dir, bool faces)
 {
   std::ofstream csv(out_dir / "table1.csv"), md(out_dir / "table1.md");
-  const bool levels = !runs.empty() && !std::isnan(runs.front().level_m);
+  const bool levels = !std::isnan(runs.front().level_m);
   const double radius =
       runs.front().summary["away_from_singular_points"]["radius_m"];
   const std::string away = faces ? "_faces_away_mpa" : "_away_mpa";

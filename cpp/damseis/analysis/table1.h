@@ -20,7 +20,8 @@ struct Table1Run
   nlohmann::json summary;
 };
 
-/// table1.csv and table1.md in out_dir (call on one rank). The columns
+/// table1.csv and table1.md in out_dir (call on one rank; `runs` not
+/// empty, all with a level or none). The columns
 /// "away from corners" take the extremes farther than the singular radius
 /// from the singular points: of the whole dam, or (`faces`: a 3D dam,
 /// whose base points next to the rock are not singular points but carry

@@ -142,7 +142,8 @@ ConcreteModel::ConcreteModel(
   const auto& gdofs = mesh->geometry().dofmap();
   std::map<std::pair<int, int>, std::int32_t> bins;
   _cell_material.resize(_num_cells);
-  std::int64_t reduced_local = 0, raised_local = 0;
+  // Cells with a lowered tensile strength, with a raised tensile energy.
+  std::array<std::int64_t, 2> large_local = {0, 0};
   for (std::int32_t c = 0; c < _num_cells; ++c)
   {
     const int r = region[c];
@@ -196,24 +197,25 @@ ConcreteModel::ConcreteModel(
       condense(_De.back(), _ct_elastic.back().data());
     }
     _cell_material[c] = pos->second;
-    if (c < _num_owned_cells &&
-        _dynamic[pos->second]->parameters().mode != material::Mode::elastic &&
-        _dynamic[pos->second]->derived().tension_strength_reduced)
+    // Owned concrete cells above the snap-back limit of the softening.
+    const material::HtcConcrete& m = *_dynamic[pos->second];
+    if (c < _num_owned_cells && m.parameters().mode != material::Mode::elastic)
     {
-      ++reduced_local;
-      const double ft = _dynamic[pos->second]->derived().ft0;
-      _reduced_ft[0] = std::min(_reduced_ft[0], ft);
-      _reduced_ft[1] = std::max(_reduced_ft[1], ft);
+      const auto& d = m.derived();
+      if (d.tension_strength_reduced)
+      {
+        ++large_local[0];
+        _reduced_ft[0] = std::min(_reduced_ft[0], d.ft0);
+        _reduced_ft[1] = std::max(_reduced_ft[1], d.ft0);
+      }
+      large_local[1] += d.tension_energy_raised;
     }
-    if (c < _num_owned_cells &&
-        _dynamic[pos->second]->parameters().mode != material::Mode::elastic &&
-        _dynamic[pos->second]->derived().tension_energy_raised)
-      ++raised_local;
   }
-  MPI_Allreduce(&raised_local, &_raised_cells, 1, MPI_INT64_T, MPI_SUM,
+  std::array<std::int64_t, 2> large;
+  MPI_Allreduce(large_local.data(), large.data(), 2, MPI_INT64_T, MPI_SUM,
                 mesh->comm());
-  MPI_Allreduce(&reduced_local, &_reduced_cells, 1, MPI_INT64_T, MPI_SUM,
-                mesh->comm());
+  _reduced_cells = large[0];
+  _raised_cells = large[1];
   _reduced_ft[1] = -_reduced_ft[1];
   MPI_Allreduce(MPI_IN_PLACE, _reduced_ft.data(), 2, MPI_DOUBLE, MPI_MIN,
                 mesh->comm());
