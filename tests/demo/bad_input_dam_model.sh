@@ -52,7 +52,6 @@ expect dm_contact_friction_negative 'joints\.friction=\[-0\.5\] is out of range;
 expect dm_contact_restitution 'joints\.restitution=1\.5 is out of range; expected 0 <= restitution <= 1' --case "$block" --set joints.model=contact --set joints.restitution=1.5
 expect dm_contact_keyed_unknown 'joints\.keyed: names "joint_right", which is not a joint' --case "$block" --set joints.model=contact --set 'joints.keyed=[joint_right]'
 expect dm_contact_keys_bonded 'joints\.friction: is given while joints\.model = "bonded"' --case "$block" --set 'joints.friction=[0.5]'
-expect dm_contact_concrete 'joints\.model: is "contact" with material\.model = "plastic"' --case "$block" --set joints.model=contact --set material.model=plastic
 expect dm_contact_history_points 'joints\.history_points: has 4 values, not 3 coordinates per point' --case "$block" --set joints.model=contact --set 'joints.history_points=[0, 0, 1, 2]'
 expect dm_contact_dead_load 'joints\.dead_load=glued is not an allowed value; expected one of "joints_active", "cantilever"' --case "$block" --set joints.model=contact --set joints.dead_load=glued
 expect dm_bond_count 'joints\.tensile_strength: has 2 values for 1 joints' --case "$block" --set joints.model=contact --set 'joints.tensile_strength=[1e5, 1e5]'

@@ -28,7 +28,6 @@ expect arch_foundation_implausible 'arch_dam\.toml.*foundation\.extent_below' --
 expect arch_thickness_implausible 'arch_dam\.toml.*dam\.crown_thickness' --set 'dam.crown_thickness=[24.6, 19.0, 13.6, 8.9, 1e300]'
 expect arch_mesh_too_fine 'arch_dam\.toml.*mesh\.size.*mesh\.max_cells' --set mesh.size=0.05
 expect arch_crest_point_outside 'arch_dam\.toml.*output\.crest_point.*outside the model' --set 'output.crest_point=[0.0, 0.0, 500.0]'
-expect arch_contact_with_htc 'arch_dam\.toml.*joints\.model.*HTC' --set joints.model=contact --set material.model=plastic
 expect arch_concrete_ft_above_half_fc 'arch_dam\.toml.*concrete\.ft' --set material.model=plastic --set concrete.ft=20e6
 expect arch_point_in_the_water 'arch_dam\.toml.*output\.base_point.*outside the model' --set 'output.base_point=[0.0, -60.0, 50.0]'
 expect arch_reservoir_above_crest 'arch_dam\.toml.*reservoir\.level' --set reservoir.level=150

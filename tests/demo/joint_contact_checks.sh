@@ -176,35 +176,12 @@ expect_no_equilibrium "grouted_joint_uplift_1.1_ft_A" 'no static equilibrium' \
   --set joints.model=contact --set reservoir.level=0 --set mesh.size=12 \
   --set time.duration=0.01 >/dev/null
 
-"$python" - "$work" <<'PY'
+"$python" - "$work" "$(dirname "$0")" <<'PY'
 import csv, json, math, sys
 work = sys.argv[1]
+sys.path.insert(0, sys.argv[2])
+from rigid_block import rigid_slip
 g, mu = 9.81, 0.2
-
-def rigid_slip(peak_g, dt=1e-7):
-    """Slip of a rigid block (friction mu) on a base accelerating as the
-    record: 0 at t = 0, A from 1 ms to 0.2 s, 0 from 0.201 s, linear in
-    between; the block slides back while A > mu g and until it stops."""
-    A = peak_g * g
-    def ag(t):
-        if t < 0.001:
-            return A * t / 0.001
-        if t <= 0.2:
-            return A
-        if t < 0.201:
-            return A * (0.201 - t) / 0.001
-        return 0.0
-    v = x = t = 0.0
-    while t < 2.0:
-        a = mu * g - ag(t)  # relative acceleration while sliding back
-        if v >= 0.0 and a >= 0.0:
-            if t > 0.002:
-                break  # stopped
-            a = 0.0  # not yet sliding
-        v += a * dt
-        x += v * dt
-        t += dt
-    return -x
 
 def joints(run):
     return json.load(open(f"{work}/{run}/summary.json"))["joints"]

@@ -24,7 +24,9 @@
 
 #include <damseis/analysis/linear_seismic.h>
 #include <damseis/analysis/nonlinear_seismic.h>
+#include <damseis/analysis/tied_concrete_system.h>
 #include <damseis/fem/concrete_model.h>
+#include <damseis/fem/tied_dofs.h>
 #include <damseis/linalg/direct_solver.h>
 #include <damseis/linalg/petsc_vectors.h>
 #include <dolfinx/fem/petsc.h>
@@ -158,6 +160,61 @@ TEST(Concrete3D, TangentMatchesFiniteDifferenceOfInternalForce)
     }
     EXPECT_LT(best, 1e-4);
   }
+}
+
+// The tangent change on tied unknowns (u = P u_r: bonded joints, P2
+// contact's midside constraints), reduced cell by cell
+// (analysis::TiedConcreteSystem), equals P^T (K_T - K0) P formed as a
+// matrix product (PETSc's PtAP): round-off (1e-12). P: the identity, and
+// every other node also following the next node's displacement with weight
+// 0.5 (rows with two entries, across ranks).
+TEST(Concrete3D, TiedTangentChangeEqualsMatrixProduct)
+{
+  Block b = block(2, material::Mode::plastic, 0.3e6);
+  PVec u = loading(*b.fe, 60.0);
+  Function uf(b.fe->V());
+  damseis::linalg::to_function(u.vec(), uf);
+  const auto stats = b.cm->update(uf, 0.01);
+  ASSERT_GT(stats.inelastic, 10) << "the load must make points yield";
+
+  PMat K = own(b.fe->assemble_stiffness());
+  PetscInt r0 = 0, r1 = 0, N = 0, m = 0;
+  MatGetOwnershipRange(K.mat(), &r0, &r1);
+  MatGetSize(K.mat(), &N, nullptr);
+  MatGetLocalSize(K.mat(), &m, nullptr);
+  Mat P;
+  MatCreateAIJ(MPI_COMM_WORLD, m, m, N, N, 2, nullptr, 2, nullptr, &P);
+  for (PetscInt row = r0; row < r1; ++row)
+  {
+    MatSetValue(P, row, row, 1.0, INSERT_VALUES);
+    const PetscInt node = row / 3, k = row % 3;
+    if (node % 2 == 1)
+      MatSetValue(P, row, (3 * (node + 1) + k) % N, 0.5, INSERT_VALUES);
+  }
+  MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY);
+  MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY);
+  PMat Pm = own(P);
+
+  // The matrix product: the change assembled on all dofs, then P^T W P.
+  PMat W = own(b.fe->assemble_stiffness());
+  MatZeroEntries(W.mat());
+  b.cm->add_tangent_change(W.mat(), 1.0);
+  PMat R = own(damseis::fem::reduce_to_tied(W.mat(), P));
+  // Cell by cell into a zeroed matrix of P^T K P's pattern.
+  PMat A = own(damseis::fem::reduce_to_tied(K.mat(), P));
+  MatZeroEntries(A.mat());
+  damseis::analysis::TiedConcreteSystem tied(*b.cm, P);
+  tied.add_tangent_change(A.mat(), 1.0);
+  MatAXPY(A.mat(), -1.0, R.mat(), DIFFERENT_NONZERO_PATTERN);
+  double diff = 0.0, ref = 0.0;
+  MatNorm(A.mat(), NORM_FROBENIUS, &diff);
+  MatNorm(R.mat(), NORM_FROBENIUS, &ref);
+  print_metric(fmt(stats.inelastic,
+                   " points inelastic; |cell by cell - "
+                   "PtAP| / |PtAP| = ",
+                   diff / ref));
+  EXPECT_GT(ref, 0.0);
+  EXPECT_LT(diff, 1e-12 * ref);
 }
 
 TEST(Concrete3D, ElasticModeMatchesLinearAnalysis)

@@ -93,7 +93,8 @@ arch_dam_seismic_analysis(ArchDamModel& model, const RunFolder& folder)
                                       fem::PlaneMode::plane_strain,
                                       {tags::dam}},
                                      {}, folder, model.tie.mat(),
-                                     model.wave ? &*model.wave : nullptr);
+                                     model.wave ? &*model.wave : nullptr,
+                                     model.contact ? &*model.contact : nullptr);
   return linear_seismic_analysis(*model.fe, model.seismic, {}, folder,
                                  model.tie.mat(),
                                  model.contact ? &*model.contact : nullptr,

@@ -53,7 +53,7 @@ input::Schema arch_dam_schema()
       .above(0)
       .at_most(10);
   s.string("joints.model", "bonded", "-",
-           "contraction joints in a linear analysis: bonded (tied pairs) or "
+           "contraction joints: bonded (tied pairs) or "
            "contact (Coulomb friction, no tension)",
            {"bonded", "contact"});
   s.real_array("joints.friction", "[]", "-",
@@ -181,9 +181,9 @@ void read_table1_study(const input::Case& c, ArchDamConfig& a, double h)
            "one study at a time (study.joints = [], study.foundation = "
            "false)");
   if (a.joints == JointModel::contact)
-    c.fail("study.table1",
-           "needs HTC concrete, not yet available with contact joints",
-           "joints.model = \"bonded\"");
+    c.fail("study.table1", "is the monolithic dam's study (bonded joints)",
+           "joints.model = \"bonded\"; contact joints with HTC concrete "
+           "run one model at a time (study.table1 = false)");
 }
 
 /// study.joints: every set "none" or distinct candidate labels.
@@ -252,13 +252,6 @@ ArchDamConfig read_arch_dam_config(const input::Case& c)
                      {"downstream", {tags::downstream_face}}};
   read_joint_contact(c, a);
   read_joint_study(c, a);
-  if (a.joints == JointModel::contact &&
-      a.concrete_model.kind != ConcreteModelKind::linear)
-    c.fail("joints.model",
-           "contact is not yet available with HTC concrete (material.model "
-           "= \"" +
-               to_string(a.concrete_model.kind) + "\")",
-           "joints.model = \"bonded\", or material.model = \"linear\"");
   a.rock_rho = c.real("rock.rho");
   a.spring_factors = {c.real("foundation.spring_normal"),
                       c.real("foundation.spring_tangential")};

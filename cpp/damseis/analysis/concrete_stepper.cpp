@@ -131,9 +131,24 @@ void ConcreteStepper::start(Vec u0, Vec v0, Vec a0, Vec f0)
   _system.reset_counts(); // count the time history only
 }
 
+void ConcreteStepper::set_contact(
+    std::shared_ptr<joint::NonlinearContact> contact)
+{
+  _contact = std::move(contact);
+  _newmark.set_constraint(_contact.get());
+}
+
 dynamics::StepReport ConcreteStepper::step(Vec f)
 {
+  if (_contact)
+    _contact->before_step();
   const dynamics::StepReport r = _newmark.step(f);
+  if (_contact)
+  {
+    Vector dv(create_vector(), false);
+    if (_contact->after_step(_newmark.v(), dv.vec()))
+      _newmark.correct_velocity(dv.vec());
+  }
   ++_step;
   _totals.add(r, _system, _step * _newmark.scheme().dt);
   _system.reset_counts();
@@ -148,6 +163,8 @@ void ConcreteStepper::save(engine::Arrays& arrays) const
   for (int i = 0; i < 4; ++i)
     arrays[state_names[i]] = linalg::owned_values(x[i]);
   arrays["newton"] = _totals.to_array();
+  if (_contact)
+    joint::save_contact(_contact->contact(), arrays);
 }
 
 void ConcreteStepper::restore(const engine::CheckpointData& data)
@@ -160,6 +177,8 @@ void ConcreteStepper::restore(const engine::CheckpointData& data)
   }
   _model.restore(data.arrays);
   _totals.from_array(engine::checkpoint_array(data, "newton"));
+  if (_contact)
+    joint::restore_contact(data, _contact->contact());
   _step = data.step;
 }
 
@@ -179,7 +198,10 @@ std::string ConcreteStepper::progress_note(const dynamics::StepReport& r) const
     note += " (" + std::to_string(r.tangent_factorizations) + " tangents)";
   if (r.cuts)
     note += ", " + std::to_string(r.cuts) + " cuts";
-  return note + ", inelastic points " +
-         std::to_string(_system.accepted.inelastic);
+  note += ", inelastic points " + std::to_string(_system.accepted.inelastic);
+  if (_contact)
+    note += joint::contact_progress_note(_contact->contact(),
+                                         _contact->last_step());
+  return note;
 }
 } // namespace damseis::analysis

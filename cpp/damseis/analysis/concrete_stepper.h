@@ -1,12 +1,16 @@
 // The stepper of a model with nonlinear concrete: HHT with Newton per step
-// (dynamics::NonlinearNewmark) on the concrete system, the material state
-// in checkpoints, and the Newton statistics of the time history.
+// (dynamics::NonlinearNewmark) on the concrete system, with contact joints
+// as a constraint of the Newton iteration if any (joint::NonlinearContact),
+// the material (and contact) state in checkpoints, and the Newton
+// statistics of the time history.
 #pragma once
 
 #include "concrete_system.h"
 #include <array>
 #include <damseis/engine/parts.h>
+#include <damseis/joint/nonlinear_contact.h>
 #include <dolfinx/la/petsc.h>
+#include <memory>
 #include <nlohmann/json.hpp>
 
 namespace damseis::analysis
@@ -66,6 +70,11 @@ public:
     return _newmark.solver().factor_seconds();
   }
   const NewtonTotals& totals() const { return _totals; }
+  /// Contact joints solved in every step (before start()); their state is
+  /// the static stage's.
+  void set_contact(std::shared_ptr<joint::NonlinearContact> contact);
+  /// The contact joints (null: none).
+  const joint::NonlinearContact* contact() const { return _contact.get(); }
 
 private:
   Mat _K0;
@@ -77,5 +86,6 @@ private:
   std::array<dolfinx::la::petsc::Vector, 4> _restored;
   NewtonTotals _totals;
   int _step = 0;
+  std::shared_ptr<joint::NonlinearContact> _contact;
 };
 } // namespace damseis::analysis

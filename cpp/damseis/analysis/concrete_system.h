@@ -106,6 +106,9 @@ protected:
       MatMultAdd(_supports, _u_trial.vec(), f, f);
   }
 
+protected:
+  const fem::ConcreteModel& model() const { return _m; }
+
 private:
   Mat _supports = nullptr;
   dolfinx::la::petsc::Vector _u_trial{nullptr, false};

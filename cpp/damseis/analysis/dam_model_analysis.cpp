@@ -184,7 +184,8 @@ dam_model_seismic_analysis(DamModel& model, const DamModelConfig& cfg,
   }
   return concrete_seismic_analysis(*model.fe, cfg.seismic, bulk,
                                    model.loads(cfg), folder, model.tie.mat(),
-                                   cfg.wave ? &*cfg.wave : nullptr);
+                                   cfg.wave ? &*cfg.wave : nullptr,
+                                   model.contact ? &*model.contact : nullptr);
 }
 
 nlohmann::json dam_model_results(MPI_Comm comm, const DamModelConfig& cfg,

@@ -325,7 +325,7 @@ input::Schema dam_model_schema()
                  "joints: the facet groups of the other faces, in the order "
                  "of side1");
   s.string("joints.model", "bonded", "-",
-           "contraction joints in a linear analysis: bonded (tied pairs) or "
+           "contraction joints: bonded (tied pairs) or "
            "contact (Coulomb friction, no tension; 3D)",
            {"bonded", "contact"});
   s.real_array("joints.friction", "[]", "-",
@@ -827,13 +827,6 @@ DamModelConfig read_dam_model_config(const input::Case& c)
   tag_for_the_forms(cfg);
   read_dam_seismic(c, cfg);
   read_recording(c, cfg);
-  if (cfg.contact.enabled && cfg.concrete.kind != ConcreteModelKind::linear)
-    c.fail("joints.model",
-           "is \"contact\" with material.model = \"" +
-               to_string(cfg.concrete.kind) +
-               "\" (contact joints on HTC concrete are not available yet)",
-           "material.model = \"elastic\" with contact joints, or bonded "
-           "joints with the concrete model");
   read_wave_foundation(c, cfg);
   return cfg;
 }

@@ -1,4 +1,5 @@
 #include "linear_seismic.h"
+#include "contact_joints.h"
 #include "energy_recorder.h"
 #include "engine_settings.h"
 #include "face_direction_recorder.h"
@@ -82,8 +83,6 @@ private:
   /// The seismic load: the free field's (wave foundation) or the base
   /// acceleration's, with `sustained` held.
   std::unique_ptr<engine::DynamicLoad> seismic_load(Vec sustained) const;
-  /// The faces of the output settings as pair faces (joint tables).
-  std::vector<joint::PairFace> pair_faces() const;
   std::vector<std::vector<std::int8_t>> face_joint_sides() const;
 
   fem::ElasticModel& _fe;
@@ -118,8 +117,7 @@ private:
   // The time history's parts and its report.
   std::unique_ptr<engine::Stepper> _stepper;
   joint::ContactStepper* _contact_stepper = nullptr; ///< _stepper, if contact
-  std::unique_ptr<joint::JointRecorder> _joints;
-  std::unique_ptr<joint::JointSurfaces> _joint_surfaces;
+  JointObservers _joints;
   std::unique_ptr<FullDisplacement> _u;
   std::unique_ptr<StressRecorder> _stresses;
   std::unique_ptr<FaceDirectionRecorder> _face_directions; ///< 3D faces
@@ -150,8 +148,7 @@ LinearSeismicAnalysis::LinearSeismicAnalysis(fem::ElasticModel& fe,
   print_model_line(fe, "");
   // The system (all dofs, or the tied unknowns u_r with u = P u_r) and the
   // static load: dead weight, hydrostatic pressure, the extra loads.
-  SeismicSystem sys =
-      assemble_seismic_system(fe, s, loads.static_loads, _tie, false);
+  SeismicSystem sys = assemble_seismic_system(fe, s, loads.static_loads, _tie);
   _added = sys.added;
   if (_wave)
     set_up_wave_foundation(sys.K.mat());
@@ -203,55 +200,14 @@ LinearSeismicAnalysis::seismic_load(Vec sustained) const
 
 void LinearSeismicAnalysis::set_up_contact(SeismicSystem& sys)
 {
-  if (_s.scheme.alpha == 0.0)
-    results::warn(_comm,
-                  "time.hht_alpha = 0 with contact joints: with the "
-                  "trapezoidal rule pairs that close and open do work "
-                  "(energy.csv, joint_work_kj: two bars meeting gained 3.4 "
-                  "times their energy); -0.1 damps it "
-                  "(tests/demo/joint_patch_impact_checks.sh)");
   // The modes of the joints bonded (the natural frequencies and the
   // Rayleigh damping of the closed dam).
   _K_bonded = Matrix(fem::reduce_to_tied(sys.K.mat(), _modal_tie), false);
   _M_bonded = Matrix(fem::reduce_to_tied(sys.M.mat(), _modal_tie), false);
-  joint::PairSet all = joint::joint_pairs(
-      *_fe.V(), *_contact->facet_tags, _contact->joints, _contact->tolerance);
-  // P2: the midside pairs follow their edges' vertex pairs (u = P u_r, P
-  // in the role of a tie), contact acts at the vertex pairs.
-  std::vector<std::size_t> vertex;
-  for (std::size_t i = 0; i < all.size(); ++i)
-    if (!all.midside[i])
-      vertex.push_back(i);
-  _pairs = joint::subset(all, vertex);
-  if (vertex.size() < all.size())
-  {
-    _mpc = Matrix(joint::midside_prolongation(*_fe.V(), all), false);
-    _tie = _mpc.mat();
-    sys.K = Matrix(fem::reduce_to_tied(sys.K.mat(), _tie), false);
-    sys.M = Matrix(fem::reduce_to_tied(sys.M.mat(), _tie), false);
-    for (Vector* f : {&sys.F_static, &sys.F_g})
-    {
-      Vector reduced = linalg::column_vector(sys.K.mat());
-      MatMultTranspose(_tie, f->vec(), reduced.vec());
-      *f = std::move(reduced);
-    }
-    // The pairs' nodes in the reduced numbering.
-    for (auto* blocks : {&_pairs->block1, &_pairs->block2})
-    {
-      *blocks = fem::reduced_blocks(_tie, 3, *blocks);
-      if (std::any_of(blocks->begin(), blocks->end(),
-                      [](std::int64_t b) { return b < 0; }))
-        throw std::logic_error("a vertex pair node is constrained");
-    }
-  }
-  results::print(_comm,
-                 "contact joints: " + std::to_string(_contact->joints.size()) +
-                     " joints, " + std::to_string(_pairs->size()) +
-                     " node pairs in contact" +
-                     (_mpc.mat()
-                          ? ", " + std::to_string(all.size() - _pairs->size()) +
-                                " midside pairs following them"
-                          : std::string()));
+  JointPairs jp = set_up_joint_pairs(_fe, _s, *_contact, sys);
+  _pairs = std::move(jp.pairs);
+  _mpc = std::move(jp.mpc);
+  _tie = _mpc.mat();
 }
 
 void LinearSeismicAnalysis::modal_stage()
@@ -454,38 +410,8 @@ void LinearSeismicAnalysis::add_recorders(engine::TimeHistory& history)
     history.observe(*_face_u);
   history.observe(*_fields);
   if (_contact_stepper)
-  {
-    _joints = std::make_unique<joint::JointRecorder>(
-        *_contact_stepper, _static_contact->w, _contact->history_points);
-    history.observe(*_joints);
-    _joint_surfaces = std::make_unique<joint::JointSurfaces>(
-        *_fe.V()->mesh(), *_contact->facet_tags, *_contact_stepper,
-        _static_contact->w, _folder.dir, _s.output_every);
-    history.observe(*_joint_surfaces);
-  }
-}
-
-std::vector<joint::PairFace> LinearSeismicAnalysis::pair_faces() const
-{
-  std::vector<joint::PairFace> faces;
-  const auto& tags = _s.face_tags ? *_s.face_tags : *_fe.model().facet_tags;
-  const auto& map = *_fe.V()->dofmap()->index_map;
-  for (const auto& [name, face_tags] : _s.faces)
-  {
-    std::vector<std::int64_t> mine;
-    for (int tag : face_tags)
-      for (std::int32_t b : fem::owned_blocks_on(*_fe.V(), tags, tag))
-        mine.push_back(map.local_range()[0] + b);
-    joint::PairFace f{name, linalg::all_gather(_comm, mine)};
-    if (_mpc.mat()) // the pairs' blocks are in the reduced numbering
-    {
-      f.blocks = fem::reduced_blocks(_mpc.mat(), 3, f.blocks);
-      std::erase(f.blocks, -1); // midside nodes: not contact pairs
-    }
-    std::sort(f.blocks.begin(), f.blocks.end());
-    faces.push_back(std::move(f));
-  }
-  return faces;
+    _joints.observe(history, _fe, *_contact, *_contact_stepper,
+                    _static_contact->w, _folder.dir, _s.output_every);
 }
 
 /// Per face, per point: -1 at a vertex of side 1 of a contact joint, 1 at
@@ -583,27 +509,14 @@ json LinearSeismicAnalysis::results()
   summary.update(crest_summary);
   _named->write(_comm, dir, summary);
   summary["energy"] = _energy->write(_comm, dir / "energy.csv");
-  if (_joints)
+  if (_joints.table)
   {
-    summary["joints"] = _joints->write(_comm, dir, pair_faces());
-    _joint_surfaces->write_envelope(_joints->largest_opening(),
-                                    _joints->largest_sliding());
-    summary["joints"]["static_stage"] = {
-        {"dead_load", _contact->statics.cantilever_dead_load
-                          ? "cantilevers (joints disconnected)"
-                          : "joints active"},
-        {"increments", _contact->statics.increments},
-        {"mass_shift_per_s2", _static_contact->shift},
-        {"iterations", _static_contact->iterations},
-        {"ncp_iterations", _static_contact->totals.ncp_iterations}};
-    summary["joints"]["static_stage"].update(
-        joint::write_static_pairs(_comm, dir, *_pairs, *_static_contact));
-    summary["joints"]["restitution"] = _contact->restitution;
-    nlohmann::json gaps = nlohmann::json::object();
-    for (const joint::JointSpec& j : _pairs->joints)
-      if (j.initial_gap > 0.0)
-        gaps[j.label] = j.initial_gap;
-    summary["joints"]["initial_gap_m"] = gaps;
+    summary["joints"] = _joints.write(
+        _comm, dir, joint_pair_faces(_fe, _s, _mpc.mat()), *_contact, *_pairs,
+        *_static_contact,
+        {{"mass_shift_per_s2", _static_contact->shift},
+         {"iterations", _static_contact->iterations},
+         {"ncp_iterations", _static_contact->totals.ncp_iterations}});
   }
   if (_wave)
   {

@@ -1,6 +1,8 @@
 #include "nonlinear_seismic.h"
+#include "concrete_outputs.h"
 #include "concrete_stepper.h"
 #include "concrete_system.h"
+#include "contact_joints.h"
 #include "engine_settings.h"
 #include "free_field_load.h"
 #include "ground_motion_load.h"
@@ -35,6 +37,7 @@
 #include <dolfinx/mesh/Mesh.h>
 #include <fstream>
 #include <limits>
+#include <numbers>
 #include <sstream>
 
 namespace damseis::analysis
@@ -46,125 +49,6 @@ using dolfinx::la::petsc::Vector;
 using nlohmann::json;
 using Clock = std::chrono::steady_clock;
 
-/// Per owned point of the stress space, the maximum over time of a scalar
-/// and when it occurred.
-struct ScalarEnvelope
-{
-  std::vector<double> max, t;
-  explicit ScalarEnvelope(std::size_t n, double start = 0.0)
-      : max(n, start), t(n, 0.0)
-  {
-  }
-  void update(std::span<const double> v, double time)
-  {
-    for (std::size_t i = 0; i < max.size(); ++i)
-    {
-      if (v[i] > max[i])
-      {
-        max[i] = v[i];
-        t[i] = time;
-      }
-    }
-  }
-};
-
-/// The envelopes of the concrete state at the dam points: the strain rate,
-/// the rate of kappa_t, and the vertical stress sigma_yy (the paper's Fig.
-/// 8: largest and, as the largest of -sigma_yy, smallest; same stress as the
-/// principal envelopes).
-class ConcreteRecorder : public engine::Observer
-{
-public:
-  ConcreteRecorder(const fem::ConcreteModel& cm, const StressRecorder& stresses,
-                   std::int32_t points, int dim)
-      : _envelopes{ScalarEnvelope(points), ScalarEnvelope(points),
-                   ScalarEnvelope(points, -HUGE_VAL),
-                   ScalarEnvelope(points, -HUGE_VAL)},
-        _cm(cm), _stresses(stresses), _nc(cm.components()), _vertical(dim - 1),
-        _syy(points)
-  {
-  }
-  void record(int, double t) override
-  {
-    rate().update(_cm.strain_rate(), t);
-    kt_rate().update(_cm.kappa_t_rate(), t);
-    const auto s = _stresses.stress();
-    for (std::size_t i = 0; i < _syy.size(); ++i)
-      _syy[i] = s[_nc * i + _vertical];
-    syy_max().update(_syy, t);
-    for (double& v : _syy)
-      v = -v;
-    syy_min().update(_syy, t);
-  }
-  void save(engine::Arrays& arrays) const override
-  {
-    for (std::size_t i = 0; i < _envelopes.size(); ++i)
-    {
-      arrays[std::string(names[i]) + "_max"] = _envelopes[i].max;
-      arrays[std::string(names[i]) + "_t"] = _envelopes[i].t;
-    }
-  }
-  void restore(const engine::CheckpointData& d) override
-  {
-    for (std::size_t i = 0; i < _envelopes.size(); ++i)
-    {
-      _envelopes[i].max = engine::checkpoint_array(
-          d, std::string(names[i]) + "_max", _syy.size());
-      _envelopes[i].t = engine::checkpoint_array(
-          d, std::string(names[i]) + "_t", _syy.size());
-    }
-  }
-  ScalarEnvelope& rate() { return _envelopes[0]; }
-  ScalarEnvelope& kt_rate() { return _envelopes[1]; }
-  ScalarEnvelope& syy_max() { return _envelopes[2]; }
-  ScalarEnvelope& syy_min() { return _envelopes[3]; }
-  const ScalarEnvelope& rate() const { return _envelopes[0]; }
-  const ScalarEnvelope& kt_rate() const { return _envelopes[1]; }
-  const ScalarEnvelope& syy_max() const { return _envelopes[2]; }
-  const ScalarEnvelope& syy_min() const { return _envelopes[3]; }
-
-private:
-  /// The envelopes and their checkpoint names.
-  std::array<ScalarEnvelope, 4> _envelopes;
-  static constexpr std::array<const char*, 4> names = {"rate", "kt_rate",
-                                                       "syy_hi", "syy_lo"};
-  const fem::ConcreteModel& _cm;
-  const StressRecorder& _stresses;
-  /// Stress components per point; the vertical normal stress' index.
-  int _nc, _vertical;
-  std::vector<double> _syy;
-};
-
-/// Largest value over the flagged owned points of all ranks, with where and
-/// when.
-results::Extreme scalar_extreme(MPI_Comm comm, const ScalarEnvelope& e,
-                                std::span<const double> coords,
-                                const std::vector<std::int8_t>& flag)
-{
-  struct
-  {
-    double v;
-    int rank;
-  } local{-HUGE_VAL, 0}, global;
-  MPI_Comm_rank(comm, &local.rank);
-  std::size_t arg = 0;
-  for (std::size_t i = 0; i < e.max.size(); ++i)
-  {
-    if (flag[i] && e.max[i] > local.v)
-    {
-      local.v = e.max[i];
-      arg = i;
-    }
-  }
-  MPI_Allreduce(&local, &global, 1, MPI_DOUBLE_INT, MPI_MAXLOC, comm);
-  std::array<double, 4> data = {0, 0, 0, 0};
-  if (local.rank == global.rank && !e.max.empty())
-    data = {coords[3 * arg], coords[3 * arg + 1], coords[3 * arg + 2],
-            e.t[arg]};
-  MPI_Bcast(data.data(), 4, MPI_DOUBLE, global.rank, comm);
-  return {global.v, {data[0], data[1], data[2]}, data[3]};
-}
-
 /// The concrete of every region of the bulk.
 std::map<int, material::ConcreteParameters>
 concrete_regions(const ConcreteBulk& bulk)
@@ -175,210 +59,6 @@ concrete_regions(const ConcreteBulk& bulk)
   return m;
 }
 
-/// Global number of cells of the regions.
-std::int64_t region_cell_count(MPI_Comm comm, const geometry::Model& model,
-                               const std::vector<int>& regions)
-{
-  const std::int32_t owned = model.mesh->topology()
-                                 .index_map(model.mesh->topology().dim())
-                                 ->size_local();
-  std::int64_t n = 0;
-  for (std::int32_t c : region_cells(model, regions))
-    n += c < owned ? 1 : 0;
-  MPI_Allreduce(MPI_IN_PLACE, &n, 1, MPI_INT64_T, MPI_SUM, comm);
-  return n;
-}
-
-/// The snap-back limit of the cell size, E Gf / (s ft^2) [m], s the
-/// snap-back safety factor (1.25; material/README.md).
-double concrete_characteristic_length(const ConcreteSettings& c)
-{
-  const auto& p = c.params;
-  return p.E * p.Gf / (p.snap_back_safety * p.ft0 * p.ft0);
-}
-
-/// dam_points.csv on rank 0: one row per owned dam point of every rank.
-void write_dam_points(MPI_Comm comm, int dim,
-                      const results::StressEnvelope& env,
-                      const std::vector<std::int8_t>& in_dam,
-                      const std::vector<const std::vector<double>*>& columns,
-                      const std::filesystem::path& file)
-{
-  const int nc = dim + 2 + static_cast<int>(columns.size());
-  std::vector<double> local;
-  for (std::size_t i = 0; i < in_dam.size(); ++i)
-  {
-    if (!in_dam[i])
-      continue;
-    const auto& x = env.point(static_cast<std::int32_t>(i));
-    local.insert(local.end(), x.begin(), x.begin() + dim);
-    local.insert(local.end(), {env.max_principal()[i] * 1e-6,
-                               env.min_principal()[i] * 1e-6});
-    for (const auto* c : columns)
-      local.push_back((*c)[i]);
-  }
-  // The vertical stress is sigma_yy in 2D, sigma_zz in 3D.
-  const std::string v = dim == 2 ? "syy" : "szz";
-  write_rows_csv(comm, local, nc,
-                 std::string(dim == 2 ? "x_m,y_m," : "x_m,y_m,z_m,") +
-                     "max_principal_mpa,min_principal_mpa,kappa_t,kappa_c,"
-                     "max_strain_rate_per_s,t_max_strain_rate_s,"
-                     "max_kappa_t_rate_per_s,max_" +
-                     v + "_mpa,min_" + v + "_mpa",
-                 file);
-}
-
-/// {"value", "x", "y"(, "z")(, "t")} of a scalar extreme, scaled.
-json scalar_json(const results::Extreme& e, double scale, bool with_time,
-                 int dim)
-{
-  json j = {{"value", scale * e.value},
-            {"x", coordinate(e.x[0])},
-            {"y", coordinate(e.x[1])}};
-  if (dim == 3)
-    j["z"] = coordinate(e.x[2]);
-  if (with_time)
-    j["t"] = instant(e.t);
-  return j;
-}
-
-/// summary.json "concrete": the material of the run.
-json concrete_json(const ConcreteSettings& c, const fem::ConcreteModel& cm,
-                   int degree)
-{
-  const auto& p = c.params;
-  json j = {
-      {"model", to_string(c.kind)},
-      {"E_pa", p.E},
-      {"fc_mpa", p.fc0 * 1e-6},
-      {"ft_mpa", p.ft0 * 1e-6},
-      {"Gf_n_per_m", p.Gf},
-      {"static_E_pa", c.static_E},
-      {"static_fc_mpa", c.static_fc * 1e-6},
-      {"static_ft_mpa", c.static_ft * 1e-6},
-      {"factor_E", c.applied.E},
-      {"factor_strength", c.applied.strength},
-      {"material_bins", cm.material_count()},
-      {"material_integration", c.implex ? "implex" : "implicit"},
-      {"characteristic_length_m", concrete_characteristic_length(c)},
-      {"tension_softening", to_string(c.params.tension_softening)},
-      {"cells_with_reduced_tensile_strength", cm.cells_with_reduced_strength()},
-      {"cells_with_raised_tensile_energy",
-       cm.cells_with_raised_tensile_energy()},
-      // Energy Gf per unit crack area whatever the mesh: P1 cells no
-      // larger than the snap-back limit.
-      {"crack_band_exact",
-       degree == 1 &&
-           p.tension_softening == material::TensionSoftening::crack_band &&
-           cm.cells_with_reduced_strength() == 0 &&
-           cm.cells_with_raised_tensile_energy() == 0}};
-  if (cm.cells_with_reduced_strength() > 0)
-  {
-    const auto ft_low = cm.reduced_tensile_strength_range();
-    j["reduced_tensile_strength_mpa"] = {{"min", ft_low[0] * 1e-6},
-                                         {"max", ft_low[1] * 1e-6}};
-  }
-  return j;
-}
-
-/// summary.json "newton": the Newton work of the static stage and of every
-/// step of the time history (restored at a restart).
-json newton_json(const dynamics::NewtonSettings& newton,
-                 const StaticStageReport& st, const NewtonTotals& nt, int steps)
-{
-  return {{"rtol", newton.rtol},
-          {"extrapolated_predictor", newton.extrapolated_predictor},
-          {"static_iterations", st.iterations},
-          {"static_cuts", st.cuts},
-          {"iterations", nt.iterations},
-          {"iterations_per_step", nt.iterations / steps},
-          {"max_iterations_in_a_step", nt.max_iterations_in_a_step},
-          {"tangent_factorizations", nt.tangent_factorizations},
-          {"krylov_iterations", nt.krylov_iterations},
-          {"substepped_point_updates", nt.substepped},
-          {"return_maps", nt.return_maps},
-          {"local_newton_iterations", nt.local_iterations},
-          // In-run throughput of the points that left the elastic fast path
-          // (plane stress: all return maps of a point's sigma_zz iteration and
-          // its tangent), per core.
-          {"returned_points", nt.returned_points},
-          {"returned_points_per_core_second",
-           nt.return_map_seconds > 0.0
-               ? nt.returned_points / nt.return_map_seconds
-               : 0.0},
-          {"seconds",
-           {{"residual", nt.seconds_residual},
-            {"tangent_assembly", nt.seconds_tangent},
-            {"factorization", nt.seconds_factorization},
-            {"direction_solves", nt.seconds_solve},
-            {"return_maps_core_seconds", nt.return_map_seconds}}},
-          {"step_cuts", nt.cuts},
-          {"max_inelastic_points", nt.max_inelastic_points}};
-}
-
-/// Says where the crack band is not exact (material/README.md, README
-/// "softening studies"): P2 elements, cells above the snap-back limit.
-void print_crack_band_notes(MPI_Comm comm, const fem::ElasticModel& fe,
-                            const fem::ConcreteModel& cm,
-                            const ConcreteSettings& concrete,
-                            const std::vector<int>& regions)
-{
-  if (concrete.params.tension_softening == material::TensionSoftening::none)
-  {
-    results::print(comm, "note: concrete.tension_softening = \"none\": the "
-                         "concrete is perfectly plastic in tension (no "
-                         "softening, no crack band)");
-    return;
-  }
-  if (fe.degree() > 1)
-  {
-    results::print(comm,
-                   "note: P" + std::to_string(fe.degree()) +
-                       " elements: the crack band (energy Gf per unit crack "
-                       "area) is exact for P1 only (a P2 cell can localise in "
-                       "part of its points: 0.75 Gf in the crack-band test); "
-                       "use mesh.order = 1 for softening studies");
-  }
-  // "note: N of M dam cells are larger than ... (snap-back limit ...): "
-  auto large_cells = [&](std::int64_t n)
-  {
-    std::ostringstream note;
-    note.precision(3);
-    note << "note: " << n << " of "
-         << region_cell_count(comm, fe.model(), regions)
-         << " dam cells are larger than E Gf / ("
-         << concrete.params.snap_back_safety
-         << " ft^2) = " << concrete_characteristic_length(concrete)
-         << " m (snap-back limit of the softening): ";
-    return note.str();
-  };
-  if (cm.cells_with_raised_tensile_energy() > 0)
-  {
-    std::ostringstream note;
-    note.precision(3);
-    note << large_cells(cm.cells_with_raised_tensile_energy())
-         << "their tensile strength is kept (concrete.tension_softening = "
-            "\"crack_band_keep_strength\") and a crack in a cell of size h "
-            "dissipates "
-         << concrete.params.snap_back_safety << " ft^2 h / E per unit area, "
-         << "more than Gf = " << concrete.params.Gf << " N/m";
-    results::print(comm, note.str());
-  }
-  if (cm.cells_with_reduced_strength() == 0)
-    return;
-  const auto ft_low = cm.reduced_tensile_strength_range();
-  std::ostringstream note;
-  note.precision(3);
-  note << large_cells(cm.cells_with_reduced_strength())
-       << "their tensile strength is lowered from "
-       << concrete.params.ft0 * 1e-6 << " to " << ft_low[0] * 1e-6 << ".."
-       << ft_low[1] * 1e-6
-       << " MPa (the crack band is not honoured there; summary.json "
-          "concrete.cells_with_reduced_tensile_strength); refine the mesh "
-          "where the concrete cracks, or see concrete.tension_softening";
-  results::print(comm, note.str());
-}
-
 /// The analysis with HTC concrete in the dam: the state is total (static
 /// included), Newton per step on the concrete system, stresses at the
 /// quadrature points.
@@ -387,8 +67,8 @@ class ConcreteSeismicAnalysis : public SeismicAnalysis
 public:
   ConcreteSeismicAnalysis(fem::ElasticModel& fe, const SeismicSettings& s,
                           ConcreteBulk bulk, const ModelLoads& loads,
-                          RunFolder folder, Mat tie,
-                          const WaveFoundation* wave);
+                          RunFolder folder, Mat tie, const WaveFoundation* wave,
+                          const ContactJoints* contact);
   void modal_stage() override;
   void static_stage() override;
   void time_history() override;
@@ -403,6 +83,13 @@ private:
   /// The viscous-spring boundary's springs (K0 and the system's supports),
   /// dashpots and the record's free field.
   void set_up_viscous_spring();
+  /// Contact joints: the bonded system of the modal stage, the pairs, and
+  /// with P2 the midside constraints (sys reduced by them, as by a tie).
+  void set_up_contact(SeismicSystem& sys, Mat joint_tie);
+  /// The static stage's contact settings (and its contact constraint).
+  void set_up_static_contact(StaticStageSettings& stage);
+  /// joint_static.csv's state and the summary entries of the static stage.
+  void keep_static_contact();
   /// The seismic load: the free field's (wave foundation) or the base
   /// acceleration's, the static loads held.
   std::unique_ptr<engine::DynamicLoad> seismic_load() const;
@@ -420,11 +107,24 @@ private:
   bool _plastic = false;
   Matrix _K{nullptr, false}, _M{nullptr, false};
   fem::ConcreteModel _cm;
-  /// Bonded joints: u = P u_r (null: none), and the full stiffness.
+  /// Bonded joints (or P2 contact's midside constraints): u = P u_r
+  /// (null: none).
   Mat _tie;
-  Matrix _K_full{nullptr, false};
   /// A foundation with mass on a viscous-spring boundary (null: none).
   const WaveFoundation* _wave;
+  /// Contact joints (null: none): the modal stage's bonded system (u =
+  /// P_modal u_b), the pairs (P2: the midside constraints in _tie), the
+  /// contact state through the stages and its constraint.
+  const ContactJoints* _contact;
+  Mat _modal_tie = nullptr;
+  Matrix _K_bonded{nullptr, false}, _M_bonded{nullptr, false};
+  Matrix _mpc{nullptr, false};
+  std::optional<joint::PairSet> _pairs;
+  std::shared_ptr<joint::CondensedContact> _pair_contact;
+  std::unique_ptr<joint::NonlinearContact> _static_constraint;
+  std::shared_ptr<joint::NonlinearContact> _dynamic_contact;
+  joint::StaticContactResult _static_contact;
+  JointObservers _joints;
   IncidentWaves _waves;
   ViscousSpringParts _vs;
   double _free_field_seconds = 0.0;
@@ -460,33 +160,31 @@ private:
   engine::TimeHistoryReport _run;
 };
 
-ConcreteSeismicAnalysis::ConcreteSeismicAnalysis(fem::ElasticModel& fe,
-                                                 const SeismicSettings& s,
-                                                 ConcreteBulk bulk,
-                                                 const ModelLoads& loads,
-                                                 RunFolder folder, Mat tie,
-                                                 const WaveFoundation* wave)
+ConcreteSeismicAnalysis::ConcreteSeismicAnalysis(
+    fem::ElasticModel& fe, const SeismicSettings& s, ConcreteBulk bulk,
+    const ModelLoads& loads, RunFolder folder, Mat tie,
+    const WaveFoundation* wave, const ContactJoints* contact)
     : _fe(fe), _s(s), _bulk(std::move(bulk)), _loads(loads),
       _folder(std::move(folder)), _comm(fe.mesh()->comm()),
-      _cm(fe, concrete_regions(_bulk), _bulk.elastic, _bulk.plane), _tie(tie),
-      _wave(wave)
+      _cm(fe, concrete_regions(_bulk), _bulk.elastic, _bulk.plane),
+      _tie(contact ? nullptr : tie), _wave(wave), _contact(contact),
+      _modal_tie(contact ? tie : nullptr)
 {
   results::set_stage("assembly");
   const ConcreteSettings& concrete = _bulk.concrete;
   print_model_line(fe, ", concrete " + to_string(concrete.kind));
-  // The system (on the tied unknowns with ties, the full K kept for the
-  // tangent changes) and the static loads: the dead weight, then the
-  // reservoir (and silt, uplift).
-  SeismicSystem sys =
-      assemble_seismic_system(fe, s, loads.static_loads, tie, true);
+  // The system (on the tied unknowns with ties) and the static loads: the dead
+  // weight, then the reservoir (and silt, uplift).
+  SeismicSystem sys = assemble_seismic_system(fe, s, loads.static_loads, _tie);
+  if (_contact)
+    set_up_contact(sys, tie);
   _added = sys.added;
   _K = std::move(sys.K);
   _M = std::move(sys.M);
-  _K_full = std::move(sys.K_full);
   _F_g = std::move(sys.F_g);
   _F_static = std::move(sys.F_static);
-  if (tie)
-    _system = std::make_unique<TiedConcreteSystem>(_cm, tie, _K_full.mat());
+  if (_tie)
+    _system = std::make_unique<TiedConcreteSystem>(_cm, _tie);
   else
     _system = std::make_unique<ConcreteSystem>(_cm);
   if (_wave)
@@ -508,12 +206,46 @@ void ConcreteSeismicAnalysis::set_up_viscous_spring()
   // internal force of the dofs the material sees (all of them with ties).
   MatAXPY(_K.mat(), 1.0, _vs.springs.mat(), SUBSET_NONZERO_PATTERN);
   _system->set_supports(_tie ? _vs.boundary->springs() : _vs.springs.mat());
+  if (_K_bonded.mat()) // contact joints: the modal stage's bonded system too
+  {
+    Matrix springs(fem::reduce_to_tied(_vs.boundary->springs(), _modal_tie),
+                   false);
+    MatAXPY(_K_bonded.mat(), 1.0, springs.mat(), DIFFERENT_NONZERO_PATTERN);
+  }
+}
+
+void ConcreteSeismicAnalysis::set_up_contact(SeismicSystem& sys, Mat joint_tie)
+{
+  if (!joint_tie)
+    throw std::invalid_argument("contact joints need the tie of the same "
+                                "joints for the modal stage");
+  if (_wave && _wave->mtf)
+    throw std::invalid_argument("a multi-transmitting boundary does not yet "
+                                "take joints");
+  // The modes of the joints bonded (the natural frequencies and the
+  // Rayleigh damping of the closed dam).
+  _K_bonded = Matrix(fem::reduce_to_tied(sys.K.mat(), joint_tie), false);
+  _M_bonded = Matrix(fem::reduce_to_tied(sys.M.mat(), joint_tie), false);
+  JointPairs jp = set_up_joint_pairs(_fe, _s, *_contact, sys);
+  _pairs = std::move(jp.pairs);
+  _mpc = std::move(jp.mpc);
+  _tie = _mpc.mat();
 }
 
 void ConcreteSeismicAnalysis::modal_stage()
 {
   // The initial elastic system; Rayleigh damping with K0.
   results::set_stage("modal analysis");
+  if (_contact)
+  {
+    // On the joints closed (bonded).
+    Matrix M0 = dry_mass(_fe, _added, _modal_tie);
+    _modal = modal_and_damping(_K_bonded.mat(), _M_bonded.mat(),
+                               _added ? M0.mat() : nullptr, _s);
+    _K_bonded = Matrix(nullptr, false);
+    _M_bonded = Matrix(nullptr, false);
+    return;
+  }
   Matrix M0 = dry_mass(_fe, _added, _tie);
   _modal =
       modal_and_damping(_K.mat(), _M.mat(), _added ? M0.mat() : nullptr, _s);
@@ -535,8 +267,12 @@ void ConcreteSeismicAnalysis::static_stage()
   stage.factorization = _s.factorization;
   stage.f1_hz = _modal->f1;
   stage.f2_hz = _modal->f2;
+  if (_contact)
+    set_up_static_contact(stage);
   _static_report = solve_static_stage(*_system, _K.mat(), _M.mat(), _F_g.vec(),
                                       _F_static.vec(), _u_static.vec(), stage);
+  if (_contact)
+    keep_static_contact();
   _sig_static.assign(_cm.stress().begin(), _cm.stress().end());
   _f_int_static = linalg::column_vector(_K.mat());
   _system->internal_force(_f_int_static.vec());
@@ -553,6 +289,40 @@ void ConcreteSeismicAnalysis::static_stage()
                      " inelastic points");
 }
 
+void ConcreteSeismicAnalysis::set_up_static_contact(StaticStageSettings& stage)
+{
+  // The pairs' problem polished by at least one Newton step (see
+  // joint::static_contact: under the small shift a start within the
+  // tolerance may still be off).
+  contact::NcpSettings ncp = _contact->ncp;
+  ncp.min_iterations = std::max(ncp.min_iterations, 1);
+  _pair_contact = std::make_shared<joint::CondensedContact>(*_pairs, ncp);
+  _static_constraint =
+      std::make_unique<joint::NonlinearContact>(_pair_contact, nullptr, -1.0);
+  const double omega_1 =
+      2.0 * std::numbers::pi * _modal->modes.frequencies_hz.front();
+  stage.contact = _static_constraint.get();
+  stage.contact_shift = joint::static_shift_factor * omega_1 * omega_1;
+  stage.cantilever_dead_load = _contact->statics.cantilever_dead_load;
+  stage.increments = std::max(stage.increments, _contact->statics.increments);
+  _static_contact.shift = stage.contact_shift;
+}
+
+void ConcreteSeismicAnalysis::keep_static_contact()
+{
+  const joint::CondensedContact& c = *_pair_contact;
+  _static_contact.g0 = c.g0();
+  _static_contact.w = c.relative_displacement();
+  _static_contact.p = c.forces();
+  _static_contact.states = c.states();
+  _static_contact.broken = c.broken();
+  _static_contact.totals = c.totals();
+  _static_contact.iterations = _static_report.iterations;
+  _static_constraint.reset();
+  _pair_contact->set_ncp(_contact->ncp);
+  _pair_contact->totals() = {}; // count the time history only
+}
+
 void ConcreteSeismicAnalysis::time_history()
 {
   // M a + C v + f_int(u) = F_static - M sum_c r_c a_gc(t), u relative to
@@ -566,14 +336,28 @@ void ConcreteSeismicAnalysis::time_history()
       _M.mat(), _K.mat(), _modal->damping, _s.scheme, *_system, _cm, _newton,
       _s.factorization, _u_static.vec(), _f_int_static.vec(),
       _wave ? _vs.dashpots.mat() : nullptr);
+  if (_contact)
+  {
+    _dynamic_contact = std::make_shared<joint::NonlinearContact>(
+        _pair_contact, _M.mat(), _contact->restitution);
+    _stepper->set_contact(_dynamic_contact);
+  }
   const std::unique_ptr<engine::DynamicLoad> ground = seismic_load();
   // Tractions with their histories on top of the ground motion's load.
   const LoadWithTimedTerms load(*ground, _loads.timed, _tie);
 
   open_run_folder(_comm, _folder);
   _u = std::make_unique<FullDisplacement>(*_stepper, _tie);
+  Vector mode = linalg::row_vector(_modal_tie ? _modal_tie : _K.mat());
   write_modes(
-      _fe, _modal->modes, [&](Vec x) { return _u->full(x); },
+      _fe, _modal->modes,
+      [&](Vec x)
+      {
+        if (!_modal_tie)
+          return _u->full(x);
+        MatMult(_modal_tie, x, mode.vec()); // the bonded modes
+        return mode.vec();
+      },
       _folder.dir / "modes.xdmf");
 
   engine::TimeHistory history(
@@ -666,6 +450,9 @@ void ConcreteSeismicAnalysis::add_recorders(engine::TimeHistory& history)
            _face_u.get(), _fields.get()})
     history.observe(*o);
   _named->observe(history);
+  if (_contact)
+    _joints.observe(history, _fe, *_contact, *_dynamic_contact,
+                    _static_contact.w, _folder.dir, _s.output_every);
 }
 
 json ConcreteSeismicAnalysis::results()
@@ -695,6 +482,18 @@ json ConcreteSeismicAnalysis::results()
   const int steps_all = std::max(1, _s.steps);
   const NewtonTotals& nt = _stepper->totals();
   summary["static_stage"] = _static_report.to_json();
+  if (_contact)
+  {
+    summary["joints"] = _joints.write(
+        _comm, dir, joint_pair_faces(_fe, _s, _mpc.mat()), *_contact, *_pairs,
+        _static_contact,
+        {{"mass_shift_per_s2", _static_contact.shift},
+         {"newton_iterations", _static_contact.iterations},
+         {"ncp_iterations", _static_contact.totals.ncp_iterations}});
+    summary["joints"]["coupling"] =
+        "contact as a constraint of the Newton iteration, condensed on the "
+        "initial effective matrix";
+  }
   summary["newton"] = newton_json(_newton, _static_report, nt, steps_all);
   if (_bulk.concrete.implex)
   {
@@ -797,13 +596,12 @@ void ConcreteSeismicAnalysis::write_concrete_outputs(json& summary) const
 }
 } // namespace
 
-std::unique_ptr<SeismicAnalysis>
-concrete_seismic_analysis(fem::ElasticModel& fe, const SeismicSettings& s,
-                          const ConcreteBulk& bulk, const ModelLoads& loads,
-                          const RunFolder& folder, Mat tie,
-                          const WaveFoundation* wave)
+std::unique_ptr<SeismicAnalysis> concrete_seismic_analysis(
+    fem::ElasticModel& fe, const SeismicSettings& s, const ConcreteBulk& bulk,
+    const ModelLoads& loads, const RunFolder& folder, Mat tie,
+    const WaveFoundation* wave, const ContactJoints* contact)
 {
   return std::make_unique<ConcreteSeismicAnalysis>(fe, s, bulk, loads, folder,
-                                                   tie, wave);
+                                                   tie, wave, contact);
 }
 } // namespace damseis::analysis

@@ -41,14 +41,19 @@ struct ConcreteBulk
 /// (optional): a foundation with mass on a viscous-spring boundary (its
 /// springs linear supports of the concrete system and in K0, its dashpots
 /// extra damping, the free field's load on top of the static loads).
-/// Checkpoints and signals as in run_linear_seismic. Collective.
+/// `contact` (optional, with `tie` the same joints bonded for the modal
+/// stage): contact joints, a constraint of every Newton iteration of the
+/// static stage and the time history (joint::NonlinearContact), with the
+/// joint outputs of run_linear_seismic. Checkpoints and signals as in
+/// run_linear_seismic. Collective.
 ///
 /// Throws dynamics::StepFailure if a step cannot be solved (the outputs
 /// written so far stay; no unconverged step is accepted).
 std::unique_ptr<SeismicAnalysis> concrete_seismic_analysis(
     fem::ElasticModel& fe, const SeismicSettings& settings,
     const ConcreteBulk& bulk, const ModelLoads& loads, const RunFolder& folder,
-    Mat tie = nullptr, const WaveFoundation* wave = nullptr);
+    Mat tie = nullptr, const WaveFoundation* wave = nullptr,
+    const ContactJoints* contact = nullptr);
 
 /// All phases of that analysis; returns the summary.
 inline nlohmann::json

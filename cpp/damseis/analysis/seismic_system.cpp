@@ -29,7 +29,7 @@ Vector system_vector(Vec f, Mat tie)
 SeismicSystem assemble_seismic_system(fem::ElasticModel& fe,
                                       const SeismicSettings& s,
                                       const std::vector<Vec>& static_loads,
-                                      Mat tie, bool keep_full_K)
+                                      Mat tie)
 {
   SeismicSystem sys;
   const bool wet = s.reservoir.depth() > 0.0;
@@ -38,10 +38,7 @@ SeismicSystem assemble_seismic_system(fem::ElasticModel& fe,
   sys.M = Matrix(fe.assemble_mass(sys.added), false);
   if (tie)
   {
-    Matrix K_tied(fem::reduce_to_tied(sys.K.mat(), tie), false);
-    if (keep_full_K)
-      sys.K_full = std::move(sys.K);
-    sys.K = std::move(K_tied);
+    sys.K = Matrix(fem::reduce_to_tied(sys.K.mat(), tie), false);
     sys.M = Matrix(fem::reduce_to_tied(sys.M.mat(), tie), false);
   }
   std::array<double, 3> g = {0, 0, 0};

@@ -17,8 +17,6 @@ struct SeismicSystem
   const fem::Reservoir* added = nullptr;
   /// Stiffness and mass (with the added mass) on the system's unknowns.
   dolfinx::la::petsc::Matrix K{nullptr, false}, M{nullptr, false};
-  /// The stiffness of all dofs (with ties and `keep_full_K` only).
-  dolfinx::la::petsc::Matrix K_full{nullptr, false};
   /// The dead weight alone and all the static loads (dead weight,
   /// hydrostatic pressure, `static_loads`), on the system's unknowns.
   dolfinx::la::petsc::Vector F_g{nullptr, false}, F_static{nullptr, false};
@@ -29,7 +27,7 @@ struct SeismicSystem
 SeismicSystem assemble_seismic_system(fem::ElasticModel& fe,
                                       const SeismicSettings& s,
                                       const std::vector<Vec>& static_loads,
-                                      Mat tie, bool keep_full_K);
+                                      Mat tie);
 
 /// The mass without the added mass on the system's unknowns (the dry
 /// modes), or null when there is no added mass.

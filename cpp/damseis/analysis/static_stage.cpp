@@ -40,6 +40,7 @@ std::pair<int, double> relax(ConcreteSystem& system, Mat K, Mat M, Vec F_a,
   dynamics::NonlinearNewmark integrator(
       M, K, dynamics::RayleighDamping::from_ratio(1.0, s.f1_hz, s.f2_hz),
       scheme, system, newton, s.factorization);
+  integrator.set_constraint(s.contact);
   Vector zero = linalg::column_vector(K), F = linalg::column_vector(K),
          fint = linalg::column_vector(K);
   load_at(from, F_a, F_b, F.vec());
@@ -109,10 +110,11 @@ double load_stage(ConcreteSystem& system, Mat K, Mat M, Vec F_a, Vec F_b,
     F_to = F_part.vec();
   }
   double reached = 1.0;
+  const dynamics::StaticConstraint constraint{s.contact, M, s.contact_shift};
   try
   {
     add(dynamics::solve_static(system, K, F_a, F_to, increments, u, s.newton,
-                               s.factorization));
+                               s.factorization, constraint));
     if (relax_from >= 1.0)
       return 1.0;
     reached = relax_from;
@@ -142,7 +144,7 @@ double load_stage(ConcreteSystem& system, Mat K, Mat M, Vec F_a, Vec F_b,
   try
   {
     add(dynamics::solve_static(system, K, start.vec(), F_b, 1, u, s.newton,
-                               s.factorization));
+                               s.factorization, constraint));
   }
   catch (const dynamics::StepFailure& e)
   {
@@ -166,8 +168,39 @@ StaticStageReport solve_static_stage(ConcreteSystem& system, Mat K, Mat M,
   StaticStageReport report;
   Vector zero = linalg::column_vector(K);
   VecSet(u, 0.0);
-  report.dead_weight_factor = load_stage(system, K, M, zero.vec(), F_g, 1, 1.0,
-                                         "the dead weight", u, s, report);
+  if (s.contact && s.cantilever_dead_load)
+  {
+    // The cantilevers carry their own weight (joints disconnected); the
+    // joints close in that state, with no force, or stay open by their
+    // initial gap: the gaps and slips are measured from it.
+    s.contact->set_disconnected(true);
+    try
+    {
+      report.dead_weight_factor =
+          load_stage(system, K, M, zero.vec(), F_g, 1, 1.0,
+                     "the dead weight on the cantilevers", u, s, report);
+    }
+    catch (const dynamics::StepFailure& e)
+    {
+      s.contact->set_disconnected(false);
+      throw dynamics::StepFailure(
+          std::string(e.what()) +
+          "; if a block has no support but its joints, use "
+          "joints.dead_load = \"joints_active\"");
+    }
+    s.contact->set_disconnected(false);
+    joint::CondensedContact& c = s.contact->contact();
+    const std::size_t n = c.pairs().size();
+    const Eigen::VectorXd w = c.relative_of(u);
+    Eigen::VectorXd g0(n);
+    for (std::size_t i = 0; i < n; ++i)
+      g0[i] = c.pairs().joints[c.pairs().joint[i]].initial_gap - w[3 * i];
+    c.set_state(g0, w, Eigen::VectorXd::Zero(3 * n),
+                std::vector<contact::PairState>(n, contact::PairState::stick));
+  }
+  else
+    report.dead_weight_factor = load_stage(
+        system, K, M, zero.vec(), F_g, 1, 1.0, "the dead weight", u, s, report);
   report.load_controlled_factor =
       load_stage(system, K, M, F_g, F_static, s.increments, s.relax_from,
                  "the loads after the dead weight", u, s, report);

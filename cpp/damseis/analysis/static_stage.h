@@ -15,10 +15,19 @@
 // from. If that fails too, the static loads have no equilibrium. The dead
 // weight, applied first in one increment, falls back the same way (a
 // monolithic arch dam on a coarse mesh can crack under its own weight).
+//
+// With contact joints (algorithms.md 2.8) the contact is a constraint of
+// every Newton iteration (joint::NonlinearContact) on the initial matrix
+// K0 + s M (s = joint::static_shift_factor omega_1^2: a block held by its
+// joints alone makes K0 singular; the shifted matrix makes the iteration
+// the proximal-point iteration of joint::static_contact). The dead weight
+// is carried with the joints active, or by the cantilevers alone (joints
+// disconnected; the gaps and slips are then measured from that state).
 #pragma once
 
 #include "concrete_system.h"
 #include <damseis/dynamics/nonlinear_newmark.h>
+#include <damseis/joint/nonlinear_contact.h>
 #include <nlohmann/json.hpp>
 
 namespace damseis::analysis
@@ -37,6 +46,12 @@ struct StaticStageSettings
   /// Load factor from which the relaxation takes over even if Newton could
   /// go on (tests: 1 = only where Newton fails).
   double relax_from = 1.0;
+  /// Contact joints (null: none; the contact state is the stage's result)
+  /// with the shift s of the initial matrix [1/s^2], and whether the dead
+  /// weight is carried by the cantilevers alone.
+  joint::NonlinearContact* contact = nullptr;
+  double contact_shift = 0.0;
+  bool cantilever_dead_load = false;
 };
 
 struct StaticStageReport

@@ -35,11 +35,16 @@ const bool trace = std::getenv("DAMSEIS_NEWTON_TRACE") != nullptr;
 /// by `tangent` (GMRES on reused factors, or a new factorisation); backed
 /// by the initial matrix's direction if the tangent's finds no decrease.
 /// On success u holds the solution and the system's trial state matches it.
+/// With a constraint (newton_constraint.h; null: none) its trial force joins
+/// the residual, every direction is corrected on the initial matrix J0
+/// (`J0_matrix`, factorised in `initial` and in the constraint), and the
+/// iteration converges only with a consistent constraint force.
 bool newton(const std::function<bool(Vec, Vec)>& residual,
             const std::function<void(Mat)>& jacobian,
             const NonlinearSystem& system, const linalg::DirectSolver& initial,
             int level, Mat J, TangentSolver& tangent, double reference, Vec u,
-            Vec R, Vec du, const NewtonSettings& s, StepReport& report)
+            Vec R, Vec du, const NewtonSettings& s, StepReport& report,
+            NewtonConstraint* constraint = nullptr, Mat J0_matrix = nullptr)
 {
   // Each step starts from the initial matrix's factors as preconditioner
   // (measured: the last step's tangent preconditions worse, since the points
@@ -49,9 +54,13 @@ bool newton(const std::function<bool(Vec, Vec)>& residual,
   {
     const auto t0 = Clock::now();
     const bool ok = residual(x, r);
+    if (ok && constraint)
+      VecAXPY(r, -1.0, constraint->force());
     report.seconds_residual += since(t0);
     return ok;
   };
+  if (constraint)
+    constraint->begin();
   if (!evaluate(u, R))
   {
     if (trace)
@@ -77,7 +86,7 @@ bool newton(const std::function<bool(Vec, Vec)>& residual,
     report.residual = r / reference;
     if (s.monitor)
       s.monitor(it, r / reference);
-    if (r <= tol)
+    if (r <= tol && (!constraint || constraint->consistent()))
     {
       converged = true;
       break;
@@ -97,6 +106,8 @@ bool newton(const std::function<bool(Vec, Vec)>& residual,
     }
     VecCopy(u, u0);
     VecCopy(R, R0);
+    if (constraint)
+      constraint->start_iteration();
     bool accepted = false;
     // pass 0: the tangent (skipped while the trial is elastic); pass 1: the
     // initial matrix.
@@ -134,6 +145,15 @@ bool newton(const std::function<bool(Vec, Vec)>& residual,
         initial.solve(R0, du);
         report.seconds_solve += since(t0);
       }
+      if (constraint)
+      {
+        // The bulk's iterate u0 - du corrected by the constraint.
+        VecWAXPY(u, -1.0, du, u0);
+        const auto t0 = Clock::now();
+        constraint->correct(J0_matrix, u);
+        report.seconds_solve += since(t0);
+        VecWAXPY(du, -1.0, u, u0);
+      }
       double dn = 0.0;
       VecNorm(du, NORM_2, &dn);
       if (!std::isfinite(dn))
@@ -148,6 +168,8 @@ bool newton(const std::function<bool(Vec, Vec)>& residual,
       for (int ls = 0; ls < 6; ++ls)
       {
         VecWAXPY(u, -eta, du, u0);
+        if (constraint)
+          constraint->blend(eta);
         const bool ok = evaluate(u, R);
         const double rt = ok ? norm(R) : INFINITY;
         if (ok && rt <= (1.0 - 1e-4 * eta) * r_ref)
@@ -186,15 +208,23 @@ bool newton(const std::function<bool(Vec, Vec)>& residual,
 
 StepReport solve_static(NonlinearSystem& system, Mat K0, Vec F_from, Vec F_to,
                         int increments, Vec u, const NewtonSettings& settings,
-                        linalg::Factorization factorization)
+                        linalg::Factorization factorization,
+                        const StaticConstraint& constrained)
 {
   MPI_Comm comm;
   PetscObjectGetComm(reinterpret_cast<PetscObject>(K0), &comm);
+  // The initial matrix K0, or K0 + s M with a constraint.
+  Mat J0 = linalg::duplicate_matrix(K0, MAT_COPY_VALUES);
+  if (constrained.constraint && constrained.shift > 0.0)
+    MatAXPY(J0, constrained.shift, constrained.M, SUBSET_NONZERO_PATTERN);
   // The tangent may be indefinite (softening): MUMPS' LU pivots.
   linalg::DirectSolver initial(comm, factorization);
   TangentSolver tangent_solver(comm, settings.krylov_rtol,
                                settings.krylov_max_iterations);
-  initial.factorize(K0);
+  initial.factorize(J0);
+  NewtonConstraint* constraint = constrained.constraint;
+  if (constraint)
+    constraint->factorize(J0);
   Mat J = linalg::duplicate_matrix(K0, MAT_DO_NOT_COPY_VALUES);
   Vec F, R, du, ut, fint;
   for (Vec* x : {&F, &R, &du, &ut, &fint})
@@ -211,8 +241,15 @@ StepReport solve_static(NonlinearSystem& system, Mat K0, Vec F_from, Vec F_to,
   };
   auto jacobian = [&](Mat A)
   {
-    MatCopy(K0, A, SAME_NONZERO_PATTERN);
+    MatCopy(J0, A, SAME_NONZERO_PATTERN);
     system.add_tangent_change(A, 1.0);
+  };
+  auto release = [&]
+  {
+    for (Vec* x : {&F, &R, &du, &ut, &fint})
+      VecDestroy(x);
+    MatDestroy(&J);
+    MatDestroy(&J0);
   };
 
   // Load factors still to reach, solved one after the other; a failed
@@ -227,20 +264,32 @@ StepReport solve_static(NonlinearSystem& system, Mat K0, Vec F_from, Vec F_to,
     VecAXPBYPCZ(F, 1.0 - target, target, 0.0, F_from, F_to);
     const double reference = std::max(norm(F), norm(F_to));
     VecCopy(u, ut);
-    if (newton(residual, jacobian, system, initial, 0, J, tangent_solver,
-               reference, ut, R, du, settings, report) &&
-        system.accept())
+    bool converged = false;
+    try
     {
+      converged =
+          newton(residual, jacobian, system, initial, 0, J, tangent_solver,
+                 reference, ut, R, du, settings, report, constraint, J0);
+    }
+    catch (...)
+    {
+      release();
+      throw;
+    }
+    if (converged && system.accept())
+    {
+      if (constraint)
+        constraint->accept();
       VecCopy(ut, u);
       done = target;
       todo.pop_back();
       continue;
     }
+    if (constraint)
+      constraint->reject();
     if (cuts >= settings.max_cuts)
     {
-      for (Vec* x : {&F, &R, &du, &ut, &fint})
-        VecDestroy(x);
-      MatDestroy(&J);
+      release();
       throw StaticStepFailure(
           "static load step to factor " + std::to_string(target) +
               " did not converge after " + std::to_string(cuts) +
@@ -252,9 +301,7 @@ StepReport solve_static(NonlinearSystem& system, Mat K0, Vec F_from, Vec F_to,
     todo.emplace_back(0.5 * (done + target), cuts + 1);
     ++report.cuts;
   }
-  for (Vec* x : {&F, &R, &du, &ut, &fint})
-    VecDestroy(x);
-  MatDestroy(&J);
+  release();
   return report;
 }
 
@@ -340,6 +387,17 @@ const linalg::DirectSolver& NonlinearNewmark::initial_solver(int level,
   return *entry.solver;
 }
 
+void NonlinearNewmark::set_constraint(NewtonConstraint* constraint)
+{
+  _constraint = constraint;
+  _constraint_level = -1;
+}
+
+void NonlinearNewmark::correct_velocity(Vec dv)
+{
+  VecAXPY(_v, 1.0, dv);
+}
+
 void NonlinearNewmark::set_state(Vec u, Vec v, Vec a, Vec f, Vec f_int)
 {
   VecCopy(u, _u);
@@ -397,6 +455,19 @@ bool NonlinearNewmark::solve_step(double dt, Vec f_next, int level,
   const linalg::DirectSolver& J0 = initial_solver(level, report);
   if (!_J)
     _J = linalg::duplicate_matrix(_K0, MAT_DO_NOT_COPY_VALUES);
+  if (_constraint && _constraint_level != level)
+  {
+    // The constraint condensed on this step length's initial matrix (cut
+    // steps: again when the step returns to a full length).
+    const auto t0 = Clock::now();
+    _constraint->factorize(_level->J0);
+    if (_constraint_level >= 0)
+    {
+      ++report.initial_factorizations;
+      report.seconds_factorization += since(t0);
+    }
+    _constraint_level = level;
+  }
 
   // Constant part of the HHT residual:
   // g = -alpha (C v + f_int) - (1 + alpha) f' + alpha f (C with C_e).
@@ -464,7 +535,8 @@ bool NonlinearNewmark::solve_step(double dt, Vec f_next, int level,
   };
 
   VecCopy(_u, _ut); // predictor: u' = u
-  if (_settings.extrapolated_predictor && _system.set_extrapolation(true))
+  if (_settings.extrapolated_predictor && !_constraint &&
+      _system.set_extrapolation(true))
   {
     // The IMPL-EX solution of the step: its residual is linear in u' with
     // the initial matrix as Jacobian, so one solve gives it.
@@ -481,8 +553,11 @@ bool NonlinearNewmark::solve_step(double dt, Vec f_next, int level,
     }
   }
   if (!newton(residual, jacobian, _system, J0, level, _J, *_tangent_solver,
-              reference, _ut, _r, _du, _settings, report))
+              reference, _ut, _r, _du, _settings, report, _constraint,
+              _level->J0))
   {
+    if (_constraint)
+      _constraint->reject();
     return false;
   }
   // Accept: newton() returns true right after evaluating the residual at
@@ -490,7 +565,13 @@ bool NonlinearNewmark::solve_step(double dt, Vec f_next, int level,
   // belong to it.
   const bool extrapolated = _system.trial_extrapolated();
   if (!_system.accept())
+  {
+    if (_constraint)
+      _constraint->reject();
     return false;
+  }
+  if (_constraint)
+    _constraint->accept();
   if (extrapolated)
   {
     // The implicit stresses' equilibrium error: the step's solution

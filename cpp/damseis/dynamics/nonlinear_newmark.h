@@ -18,6 +18,7 @@
 #pragma once
 
 #include "newmark.h"
+#include "newton_constraint.h"
 #include "tangent_solver.h"
 #include <cstdint>
 #include <functional>
@@ -127,14 +128,28 @@ struct StaticStepFailure : StepFailure
   StepReport report; ///< the work done, failed increments included
 };
 
+/// A constraint of the static solution (newton_constraint.h) and the
+/// shift of its initial matrix, K0 + shift M: a block held by its joints
+/// alone makes K0 singular, and the shift makes the modified Newton
+/// iteration the proximal-point iteration of joint::static_contact (each
+/// elastic mode j converging by shift / (shift + omega_j^2) per iteration).
+struct StaticConstraint
+{
+  NewtonConstraint* constraint = nullptr; ///< null: none
+  Mat M = nullptr;
+  double shift = 0.0; ///< [1/s^2]
+};
+
 /// Quasi-static solution of f_int(u) = F: the load goes from F_from to F_to
 /// in `increments` equal steps (static material: dt = 0). u: committed
 /// displacement on entry, solution on exit. K0: the initial stiffness (fixed
 /// rows identity). An increment that fails after settings.max_cuts halvings
-/// throws StaticStepFailure, u then holding the last converged state.
+/// throws StaticStepFailure, u then holding the last converged state (and
+/// the constraint its committed state).
 StepReport solve_static(NonlinearSystem& system, Mat K0, Vec F_from, Vec F_to,
                         int increments, Vec u, const NewtonSettings& settings,
-                        linalg::Factorization factorization);
+                        linalg::Factorization factorization,
+                        const StaticConstraint& constrained = {});
 
 class NonlinearNewmark
 {
@@ -155,6 +170,14 @@ public:
   void set_state(Vec u, Vec v, Vec a, Vec f, Vec f_int);
   /// Advances one step to the external load f_next = f(t + dt).
   StepReport step(Vec f_next);
+  /// A constraint solved in every step (null: none; not owned). The
+  /// constraint force joins the effective equation unweighted by HHT's
+  /// alpha, as in LinearNewmark.
+  void set_constraint(NewtonConstraint* constraint);
+  /// Changes the velocity of the last step by dv, the displacement and the
+  /// acceleration unchanged (the impact correction of joint pairs that
+  /// close; as LinearNewmark::correct_velocity).
+  void correct_velocity(Vec dv);
 
   Vec u() const { return _u; }
   Vec v() const { return _v; }
@@ -179,6 +202,8 @@ private:
   RayleighDamping _damping;
   TimeScheme _scheme;
   NonlinearSystem& _system;
+  NewtonConstraint* _constraint = nullptr;
+  int _constraint_level = -1; ///< the level the constraint was factorised for
   NewtonSettings _settings;
   linalg::Factorization _factorization;
   /// Per step length dt / 2^level: J0 and its factors.

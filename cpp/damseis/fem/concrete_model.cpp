@@ -741,6 +741,15 @@ void ConcreteModel::assemble_tangent(Mat A) const
 
 void ConcreteModel::add_tangent_change(Mat A, double scale) const
 {
+  add_tangent_change(dolfinx::la::petsc::Matrix::set_block_fn(A, ADD_VALUES),
+                     scale);
+  MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY);
+  MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY);
+}
+
+void ConcreteModel::add_tangent_change(const BlockSetter& set,
+                                       double scale) const
+{
   const dfem::FunctionSpace& V = *_fe.V();
   const dfem::DofMap& dofmap = *V.dofmap();
   const int bs = dofmap.bs();
@@ -778,16 +787,14 @@ void ConcreteModel::add_tangent_change(Mat A, double scale) const
   if (element.needs_dof_transformations())
     throw std::logic_error("tangent change: element needs dof transformations");
   dfem::impl::assemble_cells(
-      dolfinx::la::petsc::Matrix::set_block_fn(A, ADD_VALUES),
-      _fe.mesh()->geometry(), std::span<const std::int32_t>(_tangent_cells),
+      set, _fe.mesh()->geometry(),
+      std::span<const std::int32_t>(_tangent_cells),
       element.get_dof_transformation_function<double>(), dofmap.list(), bs,
       element.get_dof_transformation_to_transpose_function<double>(),
       dofmap.list(), bs, _bc_marker, _bc_marker,
       _a->kernel(dfem::IntegralType::cell, ids.front()),
       std::span<const double>(_coeff_work), cstride, std::span<const double>(),
       std::span<const std::uint32_t>());
-  MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY);
-  MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY);
 }
 
 std::map<std::string, std::vector<double>> ConcreteModel::save() const

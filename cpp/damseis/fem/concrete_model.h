@@ -4,6 +4,8 @@
 // the point values (forms/plasticity_2d.py).
 #pragma once
 
+#include <functional>
+
 #include "elastic_model.h"
 #include <array>
 #include <cmath>
@@ -116,6 +118,14 @@ public:
   /// assemble_tangent() while few points are inelastic. Fixed rows and
   /// columns get nothing. Collective.
   void add_tangent_change(Mat A, double scale) const;
+  /// The cell matrices of that change (rows and columns: the cells' local
+  /// dof blocks of V, values row-major per cell, fixed rows and columns
+  /// zeroed) handed to `set`, for a matrix on other unknowns (u = P u_r:
+  /// analysis/TiedConcreteSystem); no assembly is finished.
+  using BlockSetter = std::function<int(std::span<const std::int32_t>,
+                                        std::span<const std::int32_t>,
+                                        std::span<const double>)>;
+  void add_tangent_change(const BlockSetter& set, double scale) const;
 
   /// Number of quadrature points per cell.
   int points_per_cell() const { return _nq; }

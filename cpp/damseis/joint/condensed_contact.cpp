@@ -133,6 +133,7 @@ CondensedContact::CondensedContact(PairSet pairs, contact::NcpSettings ncp)
   _wT_ref = Eigen::VectorXd::Zero(2 * n);
   _states.assign(n, contact::PairState::stick);
   _broken.assign(n, 0);
+  _committed = {_p, _w, _states, _broken};
 }
 
 CondensedContact::~CondensedContact()
@@ -450,6 +451,60 @@ bool CondensedContact::break_failed_bonds(
 
 void CondensedContact::solve(Vec rhs, Vec u, Vec r)
 {
+  solve_trial(rhs, u, r);
+  commit();
+}
+
+void CondensedContact::commit()
+{
+  for (std::size_t i = 0; i < _states.size(); ++i)
+  {
+    _totals.state_changes += _states[i] != _committed.states[i];
+    _totals.bonds_broken += _broken[i] && !_committed.broken[i];
+    _wT_ref.segment<2>(2 * i) = _w.segment<2>(3 * i + 1);
+  }
+  _committed = {_p, _w, _states, _broken};
+}
+
+void CondensedContact::rollback()
+{
+  _p = _committed.p;
+  _w = _committed.w;
+  _states = _committed.states;
+  for (std::size_t i = 0; i < _broken.size(); ++i)
+  {
+    if (_broken[i] && !_committed.broken[i] && i < _problem.laws.size())
+    {
+      const contact::PairLaw law = _pairs.law(i);
+      _problem.laws[i].tension = law.tension;
+      _problem.laws[i].cohesion = law.cohesion;
+    }
+  }
+  _broken = _committed.broken;
+}
+
+void CondensedContact::force_vector(Vec r) const
+{
+  VecSet(r, 0.0);
+  if (_rank == 0)
+  {
+    const Eigen::VectorXd f = pair_forces(_p);
+    VecSetValues(r, static_cast<PetscInt>(_unknowns.size()), _unknowns.data(),
+                 f.data(), ADD_VALUES);
+  }
+  VecAssemblyBegin(r);
+  VecAssemblyEnd(r);
+}
+
+void CondensedContact::set_trial(const Eigen::VectorXd& p,
+                                 const Eigen::VectorXd& w)
+{
+  _p = p;
+  _w = w;
+}
+
+void CondensedContact::solve_trial(Vec rhs, Vec u, Vec r)
+{
   if (!_schur)
     throw std::logic_error("CondensedContact::solve before factorize");
   const std::size_t n = _pairs.size();
@@ -458,7 +513,6 @@ void CondensedContact::solve(Vec rhs, Vec u, Vec r)
   auto pair_problem = [&](const Eigen::VectorXd& y, Eigen::VectorXd& x_s)
   {
     const auto t1 = std::chrono::steady_clock::now();
-    const std::vector<char> broken_before = _broken;
     // The pair problem on rank 0; its outcome to every rank.
     std::vector<double> outcome(3 * n * 2 + 2 * n + 6, 0.0);
     if (_rank == 0)
@@ -496,28 +550,13 @@ void CondensedContact::solve(Vec rhs, Vec u, Vec r)
     _w = Eigen::Map<const Eigen::VectorXd>(outcome.data() + 3 * n, 3 * n);
     for (std::size_t i = 0; i < n; ++i)
     {
-      const auto s = static_cast<contact::PairState>(outcome[6 * n + i]);
-      _totals.state_changes += s != _states[i];
-      _states[i] = s;
-      _wT_ref.segment<2>(2 * i) = _w.segment<2>(3 * i + 1);
-      const char broken = outcome[7 * n + i] != 0.0;
-      _totals.bonds_broken += broken && !broken_before[i];
-      _broken[i] = broken;
+      _states[i] = static_cast<contact::PairState>(outcome[6 * n + i]);
+      _broken[i] = outcome[7 * n + i] != 0.0;
     }
     seconds_contact = seconds_since(t1);
   };
   transformed_solve(rhs, u, pair_problem);
-
-  // r = G p on the pair nodes' unknowns.
-  VecSet(r, 0.0);
-  if (_rank == 0)
-  {
-    const Eigen::VectorXd f = pair_forces(_p);
-    VecSetValues(r, static_cast<PetscInt>(_unknowns.size()), _unknowns.data(),
-                 f.data(), ADD_VALUES);
-  }
-  VecAssemblyBegin(r);
-  VecAssemblyEnd(r);
+  force_vector(r); // r = G p on the pair nodes' unknowns
   _totals.seconds_contact += seconds_contact;
   _totals.seconds_bulk += seconds_since(t0) - seconds_contact;
   ++_totals.solves;
@@ -585,5 +624,6 @@ void CondensedContact::set_state(const Eigen::VectorXd& g0,
     if (_broken[i] && i < _problem.laws.size()) // factorised already
       _problem.laws[i].tension = _problem.laws[i].cohesion = 0.0;
   }
+  _committed = {_p, _w, _states, _broken};
 }
 } // namespace damseis::joint

@@ -75,12 +75,31 @@ public:
 
   void factorize(Mat K_eff) override;
   /// Throws dynamics::StepFailure (on every rank) if the pair problem does
-  /// not converge.
+  /// not converge. The outcome is committed: the next solve measures the
+  /// slip from it (a time step).
   void solve(Vec rhs, Vec u, Vec r) override;
+  /// The solve without committing its outcome (an iterate of a step: the
+  /// slip is measured from the committed state, and commit() or rollback()
+  /// ends the step; collective).
+  void solve_trial(Vec rhs, Vec u, Vec r);
+  /// The last trial becomes the committed state (the slip's reference;
+  /// the counts of state changes and broken bonds).
+  void commit();
+  /// Back to the committed forces, relative displacements, states and
+  /// bonds.
+  void rollback();
+  /// Sets the trial forces and relative displacements (a line search
+  /// between two trials; the states are those of the last solve).
+  void set_trial(const Eigen::VectorXd& p, const Eigen::VectorXd& w);
+  /// r = G p of the trial forces (collective).
+  void force_vector(Vec r) const;
   /// The solve with the pairs disconnected (no pair forces; collective);
   /// the pair state is left as it was.
   void solve_free(Vec rhs, Vec u);
   std::string name() const override { return "mumps-cholesky-schur"; }
+  /// The settings of the pair problem from the next solve on.
+  void set_ncp(const contact::NcpSettings& ncp) { _ncp = ncp; }
+  const contact::NcpSettings& ncp() const { return _ncp; }
   double factor_seconds() const override { return _factor_seconds; }
 
   const PairSet& pairs() const { return _pairs; }
@@ -170,6 +189,13 @@ private:
   Eigen::VectorXd _p, _w, _g0, _wT_ref;
   std::vector<contact::PairState> _states;
   std::vector<char> _broken;
+  /// The committed state (solve_trial's iterates start from it).
+  struct Committed
+  {
+    Eigen::VectorXd p, w;
+    std::vector<contact::PairState> states;
+    std::vector<char> broken;
+  } _committed;
   ContactTotals _totals;
   double _factor_seconds = 0.0;
   MPI_Comm _comm = MPI_COMM_NULL;

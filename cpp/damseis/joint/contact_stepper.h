@@ -2,26 +2,20 @@
 // joint pairs: HHT/Newmark (dynamics::LinearNewmark) whose effective system
 // is solved with the contact condensed onto the pairs (CondensedContact),
 // then the impact correction of the pairs that closed during the step
-// (algorithms.md 2.7): their normal velocities keep the normal momentum and
-// rebound with the restitution e (e = 1: kinetic energy kept, the paper).
+// (impact_correction.h).
 // The state is total (static solution included): contact is not additive.
 #pragma once
 
 #include "condensed_contact.h"
+#include "contact_run.h"
+#include "impact_correction.h"
 #include <damseis/engine/linear_stepper.h>
 #include <dolfinx/la/petsc.h>
 #include <memory>
 
 namespace damseis::joint
 {
-/// Pairs closing from a gap narrower than this get no impact correction:
-/// the gaps of nodes that carry almost no force (the vertices of P2 faces
-/// under even pressure) flicker at the solver's precision, and rebounds
-/// there would feed the flicker. 1 micrometre: far below the openings
-/// engineers read (millimetres), far above the solver's gap precision.
-constexpr double impact_min_gap = 1e-6; // m
-
-class ContactStepper : public engine::LinearStepper
+class ContactStepper : public engine::LinearStepper, public ContactRun
 {
 public:
   /// M (with any added mass), K, damping and scheme as for
@@ -35,7 +29,6 @@ public:
                  std::shared_ptr<CondensedContact> contact, Vec u_static,
                  double restitution,
                  const std::vector<Mat>& extra_damping = {});
-  ~ContactStepper() override;
 
   dynamics::StepReport step(Vec f) override;
   /// The linear stepper's state and the contact state (forces, relative
@@ -44,26 +37,14 @@ public:
   void restore(const engine::CheckpointData& data) override;
   std::string progress_note(const dynamics::StepReport&) const override;
 
-  const CondensedContact& contact() const { return *_contact; }
+  const CondensedContact& contact() const override { return *_contact; }
   /// NCP iterations of the last step.
   long last_ncp_iterations() const { return _last.ncp_iterations; }
-  /// The contact work of the last step (counts, the same on every rank).
-  const ContactTotals& last_step() const { return _last; }
+  const ContactTotals& last_step() const override { return _last; }
 
 private:
-  /// Corrects the velocities of the pairs that closed in the last step
-  /// from a gap wider than impact_min_gap (`gap_before`: the gaps before
-  /// the step). Collective.
-  void impact_correction(const std::vector<double>& gap_before);
-  /// The values of x at the pair nodes' unknowns, on rank 0.
-  Eigen::VectorXd at_pairs(Vec x) const;
-
   std::shared_ptr<CondensedContact> _contact;
-  double _e;
-  VecScatter _to_root = nullptr; ///< pair unknowns to rank 0
-  Vec _pair_values = nullptr;
-  Eigen::VectorXd _mass;      ///< lumped mass at the pair unknowns (rank 0)
-  std::vector<char> _movable; ///< both nodes of the pair have mass
-  ContactTotals _last;        ///< the totals' increments over the last step
+  std::unique_ptr<ImpactCorrection> _impact; ///< null: no correction
+  ContactTotals _last; ///< the totals' increments over the last step
 };
 } // namespace damseis::joint

@@ -90,7 +90,7 @@ history_pairs(const PairSet& pairs,
 }
 } // namespace
 
-JointRecorder::JointRecorder(const ContactStepper& stepper,
+JointRecorder::JointRecorder(const ContactRun& stepper,
                              Eigen::VectorXd w_static,
                              const std::vector<std::array<double, 3>>& points)
     : _stepper(stepper), _w_static(std::move(w_static))

@@ -6,7 +6,7 @@
 // downstream D) the largest opening and sliding in cm.
 #pragma once
 
-#include "contact_stepper.h"
+#include "contact_run.h"
 #include "static_contact.h"
 #include <damseis/engine/parts.h>
 #include <filesystem>
@@ -41,7 +41,7 @@ public:
   /// Sliding is measured from `w_static` (3 per pair). The pairs nearest
   /// to `points` (empty: each joint's top pair) get histories. Replicated
   /// on every rank (the contact state is).
-  JointRecorder(const ContactStepper& stepper, Eigen::VectorXd w_static,
+  JointRecorder(const ContactRun& stepper, Eigen::VectorXd w_static,
                 const std::vector<std::array<double, 3>>& points = {});
   void record(int k, double t) override;
   void save(engine::Arrays& arrays) const override;
@@ -61,7 +61,7 @@ private:
   /// joint_histories.csv: t, then opening and sliding [cm] of each pair.
   void write_histories(const std::filesystem::path& file) const;
 
-  const ContactStepper& _stepper;
+  const ContactRun& _stepper;
   Eigen::VectorXd _w_static;
   /// Per pair: largest opening, its time, largest sliding, its time.
   std::vector<double> _open, _t_open, _slide, _t_slide;

@@ -50,7 +50,7 @@ std::vector<std::int32_t> pairs_at(std::span<const double> x,
 JointSurfaces::JointSurfaces(
     const dolfinx::mesh::Mesh& mesh,
     const dolfinx::mesh::MeshTags<std::int32_t>& facet_tags,
-    const ContactStepper& stepper, Eigen::VectorXd w_static,
+    const ContactRun& stepper, Eigen::VectorXd w_static,
     std::filesystem::path dir, int every)
     : _stepper(stepper), _w_static(std::move(w_static)), _dir(std::move(dir)),
       _every(std::max(every, 1))

@@ -8,7 +8,7 @@
 // neither opens nor slides.
 #pragma once
 
-#include "contact_stepper.h"
+#include "contact_run.h"
 #include <damseis/engine/parts.h>
 #include <damseis/results/xdmf_writer.h>
 #include <dolfinx/mesh/MeshTags.h>
@@ -29,7 +29,7 @@ public:
   /// Collective.
   JointSurfaces(const dolfinx::mesh::Mesh& mesh,
                 const dolfinx::mesh::MeshTags<std::int32_t>& facet_tags,
-                const ContactStepper& stepper, Eigen::VectorXd w_static,
+                const ContactRun& stepper, Eigen::VectorXd w_static,
                 std::filesystem::path dir, int every);
   /// Opens joints.xdmf (a restart: joints_from_step<k>.xdmf).
   void begin(int first_step) override;
@@ -48,7 +48,7 @@ private:
 
   std::shared_ptr<const dolfinx::mesh::Mesh> _faces;
   std::vector<std::int32_t> _pair_of_node; ///< per local node; -1: no pair
-  const ContactStepper& _stepper;
+  const ContactRun& _stepper;
   Eigen::VectorXd _w_static;
   std::filesystem::path _dir;
   int _every;
