@@ -173,22 +173,31 @@ StaticStageReport solve_static_stage(ConcreteSystem& system, Mat K, Mat M,
     // The cantilevers carry their own weight (joints disconnected); the
     // joints close in that state, with no force, or stay open by their
     // initial gap: the gaps and slips are measured from it.
-    s.contact->set_disconnected(true);
-    try
+    struct Disconnected // the pairs reconnected however the block ends
     {
-      report.dead_weight_factor =
-          load_stage(system, K, M, zero.vec(), F_g, 1, 1.0,
-                     "the dead weight on the cantilevers", u, s, report);
-    }
-    catch (const dynamics::StepFailure& e)
+      joint::NonlinearContact& c;
+      explicit Disconnected(joint::NonlinearContact& c) : c(c)
+      {
+        c.set_disconnected(true);
+      }
+      ~Disconnected() { c.set_disconnected(false); }
+    };
     {
-      s.contact->set_disconnected(false);
-      throw dynamics::StepFailure(
-          std::string(e.what()) +
-          "; if a block has no support but its joints, use "
-          "joints.dead_load = \"joints_active\"");
+      const Disconnected disconnected(*s.contact);
+      try
+      {
+        report.dead_weight_factor =
+            load_stage(system, K, M, zero.vec(), F_g, 1, 1.0,
+                       "the dead weight on the cantilevers", u, s, report);
+      }
+      catch (const dynamics::StepFailure& e)
+      {
+        throw dynamics::StepFailure(
+            std::string(e.what()) +
+            "; if a block has no support but its joints, use "
+            "joints.dead_load = \"joints_active\"");
+      }
     }
-    s.contact->set_disconnected(false);
     joint::CondensedContact& c = s.contact->contact();
     const std::size_t n = c.pairs().size();
     const Eigen::VectorXd w = c.relative_of(u);

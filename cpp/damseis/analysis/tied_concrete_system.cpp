@@ -33,6 +33,7 @@ node_rows(const dolfinx::fem::FunctionSpace& V, Mat P)
   Mat* sub = nullptr;
   MatCreateSubMatrices(P, 1, &is_rows, &is_cols, MAT_INITIAL_MATRIX, &sub);
   std::vector<std::vector<std::pair<PetscInt, double>>> follows(n);
+  int coupled = 0; // a row of P coupling components (not a node block)
   for (std::int32_t i = 0; i < n; ++i)
   {
     PetscInt ncols = 0;
@@ -43,8 +44,7 @@ node_rows(const dolfinx::fem::FunctionSpace& V, Mat P)
     {
       if (vals[k] == 0.0)
         continue;
-      if (cols[k] % bs != 0)
-        throw std::logic_error("TiedConcreteSystem: P couples components");
+      coupled = coupled || cols[k] % bs != 0;
       follows[i].emplace_back(cols[k] / bs, vals[k]);
     }
     MatRestoreRow(sub[0], i, &ncols, &cols, &vals);
@@ -52,6 +52,10 @@ node_rows(const dolfinx::fem::FunctionSpace& V, Mat P)
   MatDestroySubMatrices(1, &sub);
   ISDestroy(&is_rows);
   ISDestroy(&is_cols);
+  MPI_Allreduce(MPI_IN_PLACE, &coupled, 1, MPI_INT, MPI_MAX,
+                PetscObjectComm(reinterpret_cast<PetscObject>(P)));
+  if (coupled)
+    throw std::logic_error("TiedConcreteSystem: P couples components");
   return follows;
 }
 } // namespace

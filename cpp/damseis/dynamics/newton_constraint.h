@@ -1,15 +1,18 @@
 // Constraints solved inside the Newton iteration of the nonlinear
 // integrators (nonlinear_newmark.h): joint contact on a nonlinear bulk
-// (algorithms.md 2.6). The constraint force r (layout of the unknowns) joins
+// (in place of algorithms.md 2.6's monolithic Newton on (u, p), which
+// would factorise the unsymmetric coupled matrix at every iteration). The
+// constraint force r (layout of the unknowns) joins
 // the residual, R(u) = R_bulk(u) - r, and each Newton iterate of the bulk,
 //   z = u_k - J^-1 R_k   (J the consistent matrix, or the initial J0),
 // is corrected on the initial matrix J0, on which the constraint problem is
 // condensed (its flexibility computed once per factorisation of J0):
 //   u_k+1 = z + J0^-1 (r_k+1 - r_k),   r_k+1 solving the constraint problem
-// at u_k+1. Where the bulk is elastic (J = J0) this is the exact Newton
-// step of the constrained system: a linear bulk converges in one
-// iteration, as with the constraint condensed on the linear engine's
-// effective matrix. Where it is not, the constraint's coupling uses J0 in
+// at u_k+1. Where J0 is the exact Jacobian (an elastic bulk in a time
+// step) this is the exact Newton step of the constrained system: a linear
+// bulk converges in one iteration, as with the constraint condensed on the
+// linear engine's effective matrix. Where it is not (a yielding bulk; the
+// static stage's shifted K0 + s M), the constraint's coupling uses J0 in
 // place of J: the iteration still converges to the constrained solution
 // (the residual and the constraint problem are exact), more slowly.
 // The step is accepted only with a constraint force that solves the

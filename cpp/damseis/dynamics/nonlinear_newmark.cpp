@@ -31,13 +31,14 @@ const bool trace = std::getenv("DAMSEIS_NEWTON_TRACE") != nullptr;
 /// Newton iteration on u for R(u) = 0. `residual` evaluates the trial state
 /// and R (false: material failure); `jacobian` assembles the consistent
 /// matrix of the last trial into J. Directions: the factorised initial
-/// matrix while the trial is elastic (exact then), else the tangent solved
-/// by `tangent` (GMRES on reused factors, or a new factorisation); backed
-/// by the initial matrix's direction if the tangent's finds no decrease.
-/// On success u holds the solution and the system's trial state matches it.
-/// With a constraint (newton_constraint.h; null: none) its trial force joins
-/// the residual, every direction is corrected on the initial matrix J0
-/// (`J0_matrix`, factorised in `initial` and in the constraint), and the
+/// matrix while the trial is elastic (exact then, unless shifted), else the
+/// tangent solved by `tangent` (GMRES on reused factors, or a new
+/// factorisation); backed by the initial matrix's direction if the
+/// tangent's finds no decrease. On success u holds the solution and the
+/// system's trial state matches it.
+/// With a constraint (newton_constraint.h; null: none) its trial force
+/// joins the residual, every direction is corrected on the initial matrix
+/// J0 (`J0_matrix`, factorised in `initial` and in the constraint), and the
 /// iteration converges only with a consistent constraint force.
 bool newton(const std::function<bool(Vec, Vec)>& residual,
             const std::function<void(Mat)>& jacobian,
@@ -147,10 +148,23 @@ bool newton(const std::function<bool(Vec, Vec)>& residual,
       }
       if (constraint)
       {
-        // The bulk's iterate u0 - du corrected by the constraint.
+        // The bulk's iterate u0 - du corrected by the constraint. A
+        // constraint problem that cannot be solved at this iterate fails
+        // the direction (the next pass, or a cut step), not the run.
         VecWAXPY(u, -1.0, du, u0);
         const auto t0 = Clock::now();
-        constraint->correct(J0_matrix, u);
+        try
+        {
+          constraint->correct(J0_matrix, u);
+        }
+        catch (const StepFailure& e)
+        {
+          report.seconds_solve += since(t0);
+          if (trace)
+            std::fprintf(stderr, "newton:   constraint failed (%s): %s\n",
+                         how.c_str(), e.what());
+          continue;
+        }
         report.seconds_solve += since(t0);
         VecWAXPY(du, -1.0, u, u0);
       }
@@ -172,7 +186,10 @@ bool newton(const std::function<bool(Vec, Vec)>& residual,
           constraint->blend(eta);
         const bool ok = evaluate(u, R);
         const double rt = ok ? norm(R) : INFINITY;
-        if (ok && rt <= (1.0 - 1e-4 * eta) * r_ref)
+        // (A residual within the tolerance is taken as it is: a start at
+        // round-off need not decrease, and with a constraint the step must
+        // still reach a consistent constraint force.)
+        if (ok && (rt <= (1.0 - 1e-4 * eta) * r_ref || rt <= tol))
         {
           accepted = true;
           r = rt;
@@ -213,10 +230,14 @@ StepReport solve_static(NonlinearSystem& system, Mat K0, Vec F_from, Vec F_to,
 {
   MPI_Comm comm;
   PetscObjectGetComm(reinterpret_cast<PetscObject>(K0), &comm);
-  // The initial matrix K0, or K0 + s M with a constraint.
-  Mat J0 = linalg::duplicate_matrix(K0, MAT_COPY_VALUES);
-  if (constrained.constraint && constrained.shift > 0.0)
+  // The initial matrix K0, or K0 + s M with a shifted constraint.
+  const bool shifted = constrained.constraint && constrained.shift > 0.0;
+  Mat J0 = K0;
+  if (shifted)
+  {
+    J0 = linalg::duplicate_matrix(K0, MAT_COPY_VALUES);
     MatAXPY(J0, constrained.shift, constrained.M, SUBSET_NONZERO_PATTERN);
+  }
   // The tangent may be indefinite (softening): MUMPS' LU pivots.
   linalg::DirectSolver initial(comm, factorization);
   TangentSolver tangent_solver(comm, settings.krylov_rtol,
@@ -249,7 +270,8 @@ StepReport solve_static(NonlinearSystem& system, Mat K0, Vec F_from, Vec F_to,
     for (Vec* x : {&F, &R, &du, &ut, &fint})
       VecDestroy(x);
     MatDestroy(&J);
-    MatDestroy(&J0);
+    if (shifted)
+      MatDestroy(&J0);
   };
 
   // Load factors still to reach, solved one after the other; a failed
@@ -273,6 +295,8 @@ StepReport solve_static(NonlinearSystem& system, Mat K0, Vec F_from, Vec F_to,
     }
     catch (...)
     {
+      if (constraint)
+        constraint->reject();
       release();
       throw;
     }

@@ -471,6 +471,11 @@ void CondensedContact::rollback()
   _p = _committed.p;
   _w = _committed.w;
   _states = _committed.states;
+  reset_bonds();
+}
+
+void CondensedContact::reset_bonds()
+{
   for (std::size_t i = 0; i < _broken.size(); ++i)
   {
     if (_broken[i] && !_committed.broken[i] && i < _problem.laws.size())
@@ -485,8 +490,10 @@ void CondensedContact::rollback()
 
 void CondensedContact::force_vector(Vec r) const
 {
+  int rank = 0; // (the communicator's, also before factorize())
+  MPI_Comm_rank(PetscObjectComm(reinterpret_cast<PetscObject>(r)), &rank);
   VecSet(r, 0.0);
-  if (_rank == 0)
+  if (rank == 0)
   {
     const Eigen::VectorXd f = pair_forces(_p);
     VecSetValues(r, static_cast<PetscInt>(_unknowns.size()), _unknowns.data(),

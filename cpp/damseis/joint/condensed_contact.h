@@ -88,6 +88,9 @@ public:
   /// Back to the committed forces, relative displacements, states and
   /// bonds.
   void rollback();
+  /// Back to the committed bonds only (the bonds a trial broke are intact
+  /// again: each iterate of a step decides anew which fail).
+  void reset_bonds();
   /// Sets the trial forces and relative displacements (a line search
   /// between two trials; the states are those of the last solve).
   void set_trial(const Eigen::VectorXd& p, const Eigen::VectorXd& w);

@@ -48,15 +48,20 @@ void NonlinearContact::correct(Mat J0, Vec z)
 {
   // J0 u = J0 z - r_base + G p: the bulk's iterate plus the change of the
   // pair forces, with the pairs' NCP at u.
-  MatMult(J0, z, _rhs);
-  VecAXPY(_rhs, -1.0, _force_base);
   if (_disconnected)
   {
-    _contact->solve_free(_rhs, z);
+    // No pair forces: the bulk's iterate stands.
     VecSet(_force_new, 0.0);
+    _p_new = _contact->forces();
+    _w_new = _contact->relative_displacement();
+    _corrected = true;
+    return;
   }
-  else
-    _contact->solve_trial(_rhs, z, _force_new);
+  MatMult(J0, z, _rhs);
+  VecAXPY(_rhs, -1.0, _force_base);
+  // The bonds an earlier iterate broke are judged again at this one.
+  _contact->reset_bonds();
+  _contact->solve_trial(_rhs, z, _force_new);
   _p_new = _contact->forces();
   _w_new = _contact->relative_displacement();
   _corrected = true;

@@ -1,6 +1,7 @@
 // Joint contact on a nonlinear bulk (HTC concrete): the contact as a
 // constraint of the Newton iteration of dynamics::NonlinearNewmark and
-// dynamics::solve_static (dynamics/newton_constraint.h, algorithms.md 2.6),
+// dynamics::solve_static (dynamics/newton_constraint.h; instead of
+// algorithms.md 2.6's monolithic Newton),
 // condensed on the initial effective matrix J0 of the step length
 // (CondensedContact: the pairs' flexibility W0 = G^T J0^-1 G computed once
 // per factorisation of J0). Each Newton iterate z of the bulk is corrected
