@@ -310,13 +310,9 @@ void ConcreteSeismicAnalysis::set_up_static_contact(StaticStageSettings& stage)
 
 void ConcreteSeismicAnalysis::keep_static_contact()
 {
-  const joint::CondensedContact& c = *_pair_contact;
-  _static_contact.g0 = c.g0();
-  _static_contact.w = c.relative_displacement();
-  _static_contact.p = c.forces();
-  _static_contact.states = c.states();
-  _static_contact.broken = c.broken();
-  _static_contact.totals = c.totals();
+  const double shift = _static_contact.shift;
+  _static_contact = joint::contact_state(*_pair_contact);
+  _static_contact.shift = shift;
   _static_contact.iterations = _static_report.iterations;
   _static_constraint.reset();
   _pair_contact->set_ncp(_contact->ncp);

@@ -1,5 +1,6 @@
 #include "static_stage.h"
 #include <cmath>
+#include <damseis/joint/static_contact.h>
 #include <damseis/results/progress.h>
 #include <dolfinx/la/petsc.h>
 #include <sstream>
@@ -198,14 +199,7 @@ StaticStageReport solve_static_stage(ConcreteSystem& system, Mat K, Mat M,
             "joints.dead_load = \"joints_active\"");
       }
     }
-    joint::CondensedContact& c = s.contact->contact();
-    const std::size_t n = c.pairs().size();
-    const Eigen::VectorXd w = c.relative_of(u);
-    Eigen::VectorXd g0(n);
-    for (std::size_t i = 0; i < n; ++i)
-      g0[i] = c.pairs().joints[c.pairs().joint[i]].initial_gap - w[3 * i];
-    c.set_state(g0, w, Eigen::VectorXd::Zero(3 * n),
-                std::vector<contact::PairState>(n, contact::PairState::stick));
+    joint::close_joints_at(s.contact->contact(), u);
   }
   else
     report.dead_weight_factor = load_stage(

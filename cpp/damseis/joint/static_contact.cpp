@@ -120,12 +120,7 @@ StaticContactResult static_contact(Mat K, Mat M, double omega_1, Vec F_dead,
         "static stage, dead weight on the cantilevers",
         ": a block has no support but its joints, so it cannot carry its "
         "dead weight alone; use joints.dead_load = \"joints_active\"");
-    const Eigen::VectorXd w = c.relative_of(r.u.vec());
-    Eigen::VectorXd g0(n);
-    for (std::size_t i = 0; i < n; ++i)
-      g0[i] = pairs.joints[pairs.joint[i]].initial_gap - w[3 * i];
-    c.set_state(g0, w, Eigen::VectorXd::Zero(3 * n),
-                std::vector<contact::PairState>(n, contact::PairState::stick));
+    close_joints_at(c, r.u.vec());
   }
   else
     increment(0.0, "static stage, dead weight");
@@ -134,6 +129,16 @@ StaticContactResult static_contact(Mat K, Mat M, double omega_1, Vec F_dead,
     increment(static_cast<double>(k) / m, "static stage, load increment " +
                                               std::to_string(k) + "/" +
                                               std::to_string(m));
+  StaticContactResult state = contact_state(c);
+  state.u = std::move(r.u);
+  state.shift = r.shift;
+  state.iterations = r.iterations;
+  return state;
+}
+
+StaticContactResult contact_state(const CondensedContact& c)
+{
+  StaticContactResult r;
   r.g0 = c.g0();
   r.w = c.relative_displacement();
   r.p = c.forces();
@@ -141,5 +146,17 @@ StaticContactResult static_contact(Mat K, Mat M, double omega_1, Vec F_dead,
   r.broken = c.broken();
   r.totals = c.totals();
   return r;
+}
+
+void close_joints_at(CondensedContact& c, Vec u)
+{
+  const PairSet& pairs = c.pairs();
+  const std::size_t n = pairs.size();
+  const Eigen::VectorXd w = c.relative_of(u);
+  Eigen::VectorXd g0(n);
+  for (std::size_t i = 0; i < n; ++i)
+    g0[i] = pairs.joints[pairs.joint[i]].initial_gap - w[3 * i];
+  c.set_state(g0, w, Eigen::VectorXd::Zero(3 * n),
+              std::vector<contact::PairState>(n, contact::PairState::stick));
 }
 } // namespace damseis::joint

@@ -51,6 +51,15 @@ struct StaticContactResult
   int iterations = 0;       ///< proximal-point iterations over all increments
 };
 
+/// The pairs' state after a static stage (the u, shift and iterations
+/// left to the caller).
+StaticContactResult contact_state(const CondensedContact& c);
+
+/// The joints closed (grouted) at the displacement u of the cantilevers'
+/// dead load, with no force, or open by their initial gap: the gaps'
+/// reference and the slips measured from u (collective).
+void close_joints_at(CondensedContact& c, Vec u);
+
 /// K u = F + G p with the contact of `pairs`: F_dead first (one increment),
 /// then F_dead + k/n (F_all - F_dead), k = 1..n. Collective. Throws
 /// ContactFailure naming the increment if contact does not converge, if
