@@ -79,18 +79,21 @@ def face_blocks(d, planes):
     """The block (monolith) of each face point: the number of joint planes
     it lies beyond (towards +x); a point on a plane (the joint's edge on
     the face, where each side has its own point) belongs to the block of
-    its side (column joint_side: 1 on side 2, the block beyond)."""
+    its side (column joint_side: 1 on side 2, the block beyond). The
+    quadrature points of a nonlinear run (no joint_side) lie inside their
+    cells, off the planes."""
     q = np.column_stack([d["x_m"], d["y_m"], d["z_m"]])
     block = np.zeros(len(q), dtype=int)
-    if not planes or "joint_side" not in d:
+    if not planes:
         return block
+    side = d["joint_side"] if "joint_side" in d else np.zeros(len(q))
     # The planes come from six-digit coordinates; the points off a plane
     # lie an element or so away from it.
     tol = 1e-4 * np.ptp(q, axis=0).max()
     for c, n in planes:
         s = (q - c) @ n
         on = np.abs(s) <= tol
-        block += (s > tol) | (on & (d["joint_side"] > 0))
+        block += (s > tol) | (on & (side > 0))
     return block
 
 
@@ -162,7 +165,7 @@ def plot_face_maps(out: Path, summary: dict, suffix: str, panels, title: str,
             for b, tri in tris:
                 cs = ax.tricontourf(tri, np.clip(v[b], lo, hi), levels=levels,
                                     cmap="RdYlBu_r", extend=extend)
-            if len(tris) > 1:  # the joints' edges on the face
+            if len(tris) > 1 and "joint_side" in d:  # the joints' edges
                 for k in range(1, block.max() + 1):
                     e = (block == k) & (d["joint_side"] > 0)
                     order = np.argsort(d["z_m"][e])
@@ -226,9 +229,15 @@ def plot_concrete_faces(out: Path, summary: dict) -> None:
     if not (out / "face_upstream_concrete.csv").exists():
         return
     fig, axes = plt.subplots(2, 2, figsize=(13, 8))
+    planes = joint_planes(out)
     for row, face in enumerate(("upstream", "downstream")):
         d = read_face(out / f"face_{face}_concrete.csv")
-        tri = face_triangulation(face_x(d, face), d["z_m"])
+        x = face_x(d, face)
+        # Contact joints: each block drawn apart (as in plot_face_maps).
+        block = face_blocks(d, planes)
+        tris = [(b, face_triangulation(x[b], d["z_m"][b]))
+                for b in (block == k for k in np.unique(block))
+                if b.sum() >= 3]
         rate = np.log10(np.maximum(d["max_strain_rate_per_s"], 1e-8))
         panels = ((rate, "log10 of the largest strain rate [1/s]",
                    f"max {d['max_strain_rate_per_s'].max():.3g} /s"),
@@ -238,8 +247,9 @@ def plot_concrete_faces(out: Path, summary: dict) -> None:
             ax = axes[row, col]
             hi = v.max()
             lo = min(v.min(), hi - 1e-12)
-            cs = ax.tricontourf(tri, v, levels=np.linspace(lo, hi, 21),
-                                cmap="viridis" if col == 0 else "magma_r")
+            for b, tri in tris:
+                cs = ax.tricontourf(tri, v[b], levels=np.linspace(lo, hi, 21),
+                                    cmap="viridis" if col == 0 else "magma_r")
             fig.colorbar(cs, ax=ax, shrink=0.85)
             ax.set_title(f"{face} face: {what}\n{note} (cell means)",
                          fontsize=9)
