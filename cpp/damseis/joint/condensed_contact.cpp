@@ -476,9 +476,12 @@ void CondensedContact::rollback()
 
 void CondensedContact::reset_bonds()
 {
+  // Every pair intact in the committed state gets its law back, also one
+  // whose bond a failed solve broke on rank 0 before it threw (_broken
+  // not yet updated then).
   for (std::size_t i = 0; i < _broken.size(); ++i)
   {
-    if (_broken[i] && !_committed.broken[i] && i < _problem.laws.size())
+    if (!_committed.broken[i] && i < _problem.laws.size())
     {
       const contact::PairLaw law = _pairs.law(i);
       _problem.laws[i].tension = law.tension;
