@@ -17,7 +17,7 @@
 
 namespace damseis::analysis
 {
-/// How contraction joints act in a linear analysis.
+/// How contraction joints act (linear or HTC concrete).
 enum class JointModel
 {
   bonded,  ///< pairs tied: the monolithic dam
