@@ -105,8 +105,6 @@ protected:
     if (_supports)
       MatMultAdd(_supports, _u_trial.vec(), f, f);
   }
-
-protected:
   const fem::ConcreteModel& model() const { return _m; }
 
 private:

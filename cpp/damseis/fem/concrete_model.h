@@ -4,14 +4,13 @@
 // the point values (forms/plasticity_2d.py).
 #pragma once
 
-#include <functional>
-
 #include "elastic_model.h"
 #include <array>
 #include <cmath>
 #include <damseis/material/concrete.h>
 #include <dolfinx/fem/Expression.h>
 #include <dolfinx/la/petsc.h>
+#include <functional>
 #include <map>
 #include <memory>
 #include <span>

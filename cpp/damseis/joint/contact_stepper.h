@@ -38,13 +38,10 @@ public:
   std::string progress_note(const dynamics::StepReport&) const override;
 
   const CondensedContact& contact() const override { return *_contact; }
-  /// NCP iterations of the last step.
-  long last_ncp_iterations() const { return _last.ncp_iterations; }
-  const ContactTotals& last_step() const override { return _last; }
+  const ContactTotals& last_step() const override { return _work.last(); }
 
 private:
   std::shared_ptr<CondensedContact> _contact;
-  std::unique_ptr<ImpactCorrection> _impact; ///< null: no correction
-  ContactTotals _last; ///< the totals' increments over the last step
+  ContactStepWork _work; ///< impact correction and the step's totals
 };
 } // namespace damseis::joint

@@ -1,13 +1,12 @@
 #include "impact_correction.h"
+#include "contact_run.h"
+#include <chrono>
 #include <damseis/contact/impact.h>
-#include <dolfinx/la/petsc.h>
 
 namespace damseis::joint
 {
 namespace
 {
-using dolfinx::la::petsc::Vector;
-
 double sum(Vec x)
 {
   PetscScalar s = 0.0;
@@ -133,5 +132,35 @@ std::size_t ImpactCorrection::correction(const std::vector<double>& gap_before,
   VecAssemblyBegin(dv);
   VecAssemblyEnd(dv);
   return closing.size();
+}
+
+ContactStepWork::ContactStepWork(Mat M, CondensedContact& contact,
+                                 double restitution)
+    : _contact(contact)
+{
+  if (restitution >= 0.0)
+    _impact = std::make_unique<ImpactCorrection>(M, _contact, restitution);
+}
+
+void ContactStepWork::before()
+{
+  _before = _contact.totals();
+  if (_impact)
+    _gap_before = _impact->gaps();
+}
+
+bool ContactStepWork::after(Vec v, Vec dv)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  std::size_t closing = 0;
+  if (_impact)
+    closing = _impact->correction(_gap_before, v, dv);
+  ContactTotals& t = _contact.totals();
+  t.impacts += static_cast<long>(closing);
+  t.seconds_impact +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
+          .count();
+  _last = count_difference(t, _before);
+  return closing > 0;
 }
 } // namespace damseis::joint

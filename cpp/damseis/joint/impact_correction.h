@@ -8,6 +8,7 @@
 
 #include "condensed_contact.h"
 #include <Eigen/Core>
+#include <memory>
 #include <vector>
 
 namespace damseis::joint
@@ -48,5 +49,27 @@ private:
   Vec _pair_values = nullptr;
   Eigen::VectorXd _mass;      ///< lumped mass at the pair unknowns (rank 0)
   std::vector<char> _movable; ///< both nodes of the pair have mass
+};
+
+/// What a joint stepper does around each time step: before it, the gaps
+/// and the contact totals; after it, the impact correction (none with a
+/// negative restitution) and the totals' increments over the step.
+class ContactStepWork
+{
+public:
+  /// M: the mass matrix of the unknowns (unused with restitution < 0).
+  ContactStepWork(Mat M, CondensedContact& contact, double restitution);
+  void before();
+  /// The impact correction's velocity change into dv (v: the step's
+  /// velocity); false if no pair closed (dv untouched). Collective.
+  bool after(Vec v, Vec dv);
+  /// The contact totals' increments over the last step.
+  const ContactTotals& last() const { return _last; }
+
+private:
+  CondensedContact& _contact;
+  std::unique_ptr<ImpactCorrection> _impact; ///< null: no correction
+  std::vector<double> _gap_before;
+  ContactTotals _before, _last;
 };
 } // namespace damseis::joint

@@ -1,14 +1,11 @@
 #include "nonlinear_contact.h"
-#include <chrono>
 
 namespace damseis::joint
 {
 NonlinearContact::NonlinearContact(std::shared_ptr<CondensedContact> contact,
                                    Mat M, double restitution)
-    : _contact(std::move(contact))
+    : _contact(std::move(contact)), _work(M, *_contact, restitution)
 {
-  if (restitution >= 0.0)
-    _impact = std::make_unique<ImpactCorrection>(M, *_contact, restitution);
 }
 
 NonlinearContact::~NonlinearContact()
@@ -91,23 +88,11 @@ void NonlinearContact::reject()
 
 void NonlinearContact::before_step()
 {
-  _before = _contact->totals();
-  if (_impact)
-    _gap_before = _impact->gaps();
+  _work.before();
 }
 
 bool NonlinearContact::after_step(Vec v, Vec dv)
 {
-  const auto t0 = std::chrono::steady_clock::now();
-  std::size_t closing = 0;
-  if (_impact)
-    closing = _impact->correction(_gap_before, v, dv);
-  ContactTotals& t = _contact->totals();
-  t.impacts += static_cast<long>(closing);
-  t.seconds_impact +=
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
-          .count();
-  _last = count_difference(t, _before);
-  return closing > 0;
+  return _work.after(v, dv);
 }
 } // namespace damseis::joint

@@ -54,19 +54,17 @@ public:
 
   // ContactRun
   const CondensedContact& contact() const override { return *_contact; }
-  const ContactTotals& last_step() const override { return _last; }
+  const ContactTotals& last_step() const override { return _work.last(); }
   CondensedContact& contact() { return *_contact; }
 
 private:
   std::shared_ptr<CondensedContact> _contact;
-  std::unique_ptr<ImpactCorrection> _impact;
+  ContactStepWork _work; ///< impact correction and the step's totals
   bool _disconnected = false;
   /// The trial force, the base of the iteration and the corrected one.
   Vec _force = nullptr, _force_base = nullptr, _force_new = nullptr;
   Vec _rhs = nullptr;
   Eigen::VectorXd _p_base, _w_base, _p_new, _w_new;
   bool _corrected = false, _consistent = false;
-  std::vector<double> _gap_before;
-  ContactTotals _before, _last;
 };
 } // namespace damseis::joint
