@@ -342,7 +342,7 @@ NonlinearNewmark::NonlinearNewmark(Mat M, Mat K0, RayleighDamping damping,
   if (!(scheme.alpha >= -1.0 / 3.0 - 1e-14 && scheme.alpha <= 0.0))
     throw std::invalid_argument("HHT alpha must lie in [-1/3, 0]");
   for (Vec* x : {&_u, &_v, &_a, &_f, &_fint, &_ut, &_vt, &_at, &_fint_t, &_r,
-                 &_g, &_w1, &_w2, &_du, &_tmp})
+                 &_g, &_w1, &_w2, &_du, &_tmp, &_u_prev, &_u_start, &_d_p})
   {
     MatCreateVecs(K0, x, nullptr);
     VecSet(*x, 0.0);
@@ -358,7 +358,7 @@ NonlinearNewmark::NonlinearNewmark(Mat M, Mat K0, RayleighDamping damping,
 NonlinearNewmark::~NonlinearNewmark()
 {
   for (Vec* x : {&_u, &_v, &_a, &_f, &_fint, &_ut, &_vt, &_at, &_fint_t, &_r,
-                 &_g, &_w1, &_w2, &_du, &_tmp})
+                 &_g, &_w1, &_w2, &_du, &_tmp, &_u_prev, &_u_start, &_d_p})
   {
     VecDestroy(x);
   }
@@ -391,10 +391,25 @@ const linalg::DirectSolver& NonlinearNewmark::initial_solver(int level,
   const double a0 = 1.0 / (beta * dt * dt), a1 = gamma / (beta * dt);
   // J0 = a0 M + (1 + alpha)(a1 C + K0).
   Mat J0 = linalg::duplicate_matrix(_K0, MAT_COPY_VALUES);
-  MatScale(J0, w * (1.0 + a1 * _damping.b_stiffness));
+  if (_partition.K_implicit)
+  {
+    // a0 M + a1 (a_M M + b_K K_I) + K0 - K_E, the prescribed rows and
+    // columns identity (alpha = 0).
+    MatAXPY(J0, -1.0, _partition.K_explicit, SUBSET_NONZERO_PATTERN);
+    MatAXPY(J0, a1 * _damping.b_stiffness, _partition.K_implicit,
+            SUBSET_NONZERO_PATTERN);
+  }
+  else
+    MatScale(J0, w * (1.0 + a1 * _damping.b_stiffness));
   MatAXPY(J0, a0 + w * a1 * _damping.a_mass, _M, SUBSET_NONZERO_PATTERN);
   if (_Ce)
     MatAXPY(J0, w * a1, _Ce, SUBSET_NONZERO_PATTERN);
+  if (_partition.prescribed)
+  {
+    const std::vector<PetscInt>& rows = _partition.prescribed->rows();
+    MatZeroRowsColumns(J0, static_cast<PetscInt>(rows.size()), rows.data(), 1.0,
+                       nullptr, nullptr);
+  }
   MPI_Comm comm;
   PetscObjectGetComm(reinterpret_cast<PetscObject>(_K0), &comm);
   auto solver = std::make_unique<linalg::DirectSolver>(comm, _factorization);
@@ -413,8 +428,65 @@ const linalg::DirectSolver& NonlinearNewmark::initial_solver(int level,
 
 void NonlinearNewmark::set_constraint(NewtonConstraint* constraint)
 {
+  if (constraint && _partition.K_implicit)
+    throw std::invalid_argument("a Newton constraint (contact joints) is "
+                                "not available with a partition");
   _constraint = constraint;
   _constraint_level = -1;
+}
+
+void NonlinearNewmark::set_partition(Partition partition)
+{
+  if (_scheme.alpha != 0.0)
+    throw std::invalid_argument("the implicit-explicit partition is "
+                                "Newmark's average acceleration: HHT alpha "
+                                "must be 0");
+  if (_constraint)
+    throw std::invalid_argument("a Newton constraint (contact joints) is "
+                                "not available with a partition");
+  if (!partition.K_implicit || !partition.K_explicit)
+    throw std::invalid_argument("a partition needs K_implicit and "
+                                "K_explicit");
+  _partition = std::move(partition);
+  const std::size_t n =
+      _partition.prescribed ? _partition.prescribed->rows().size() : 0;
+  _start_values.assign(n, 0.0);
+  _end_values.assign(n, 0.0);
+  _values.assign(n, 0.0);
+  // The initial matrices again, with the partition.
+  for (auto& [level, entry] : _initial)
+  {
+    entry.solver.reset();
+    MatDestroy(&entry.J0);
+  }
+  _initial.clear();
+  StepReport dummy;
+  initial_solver(0, dummy);
+}
+
+void NonlinearNewmark::set_history(Vec u_prev, int n)
+{
+  VecCopy(u_prev, _u_prev);
+  _n = n;
+}
+
+void NonlinearNewmark::set_prescribed(Vec x,
+                                      const std::vector<double>& values) const
+{
+  const std::vector<PetscInt>& rows = _partition.prescribed->rows();
+  PetscInt r0 = 0;
+  VecGetOwnershipRange(x, &r0, nullptr);
+  double* p = nullptr;
+  VecGetArray(x, &p);
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    p[rows[i] - r0] = values[i];
+  VecRestoreArray(x, &p);
+}
+
+void NonlinearNewmark::prescribed_values(double theta)
+{
+  for (std::size_t i = 0; i < _values.size(); ++i)
+    _values[i] = _start_values[i] + theta * (_end_values[i] - _start_values[i]);
 }
 
 void NonlinearNewmark::correct_velocity(Vec dv)
@@ -429,12 +501,26 @@ void NonlinearNewmark::set_state(Vec u, Vec v, Vec a, Vec f, Vec f_int)
   VecCopy(a, _a);
   VecCopy(f, _f);
   VecCopy(f_int, _fint);
+  VecCopy(u, _u_prev);
+  _n = 0;
 }
 
 StepReport NonlinearNewmark::step(Vec f_next)
 {
   StepReport report;
+  if (_partition.prescribed)
+  {
+    // The prescribed displacements at n + 1 from steps n and n - 1.
+    const std::vector<PetscInt>& rows = _partition.prescribed->rows();
+    _partition.prescribed->values(_n + 1, _u, _u_prev, _end_values);
+    VecGetValues(_u, static_cast<PetscInt>(rows.size()), rows.data(),
+                 _start_values.data());
+  }
+  VecCopy(_u, _u_start);
+  _elapsed = 0.0;
   advance(_scheme.dt, f_next, 0, report);
+  VecCopy(_u_start, _u_prev);
+  ++_n;
   return report;
 }
 
@@ -500,7 +586,7 @@ bool NonlinearNewmark::solve_step(double dt, Vec f_next, int level,
   MatMult(_M, _tmp, _g);
   VecCopy(_v, _tmp);
   VecScale(_tmp, -alpha * bK);
-  MatMultAdd(_K0, _tmp, _g, _g);
+  MatMultAdd(_partition.K_implicit ? _partition.K_implicit : _K0, _tmp, _g, _g);
   if (_Ce)
   {
     VecCopy(_v, _tmp);
@@ -536,7 +622,7 @@ bool NonlinearNewmark::solve_step(double dt, Vec f_next, int level,
     MatMult(_M, _w1, R);
     VecCopy(_vt, _w2);
     VecScale(_w2, w * bK);
-    MatMultAdd(_K0, _w2, R, R);
+    MatMultAdd(_partition.K_implicit ? _partition.K_implicit : _K0, _w2, R, R);
     if (_Ce)
     {
       VecCopy(_vt, _w2);
@@ -545,6 +631,24 @@ bool NonlinearNewmark::solve_step(double dt, Vec f_next, int level,
     }
     VecAXPY(R, w, _fint_t);
     VecAXPY(R, 1.0, _g);
+    if (_partition.K_explicit)
+    {
+      // The explicit elements' force at the predictor: - K_E (u' - d~).
+      VecWAXPY(_w2, -1.0, _d_p, ut);
+      VecScale(_w2, -1.0);
+      MatMultAdd(_partition.K_explicit, _w2, R, R);
+    }
+    if (_partition.prescribed)
+    {
+      // R = u' - value at the prescribed rows (identity rows of J).
+      const std::vector<PetscInt>& rows = _partition.prescribed->rows();
+      std::vector<double> r(rows.size());
+      VecGetValues(ut, static_cast<PetscInt>(rows.size()), rows.data(),
+                   r.data());
+      for (std::size_t i = 0; i < r.size(); ++i)
+        r[i] -= _values[i];
+      set_prescribed(R, r);
+    }
     return true;
   };
   // Consistent effective matrix: a0 M + (1 + alpha)(a1 C + K_T)
@@ -559,6 +663,17 @@ bool NonlinearNewmark::solve_step(double dt, Vec f_next, int level,
   };
 
   VecCopy(_u, _ut); // predictor: u' = u
+  if (_partition.K_explicit)
+  {
+    // d~ = u + dt v + dt^2 (1/2 - beta) a (the explicit elements' state).
+    VecWAXPY(_d_p, dt, _v, _u);
+    VecAXPY(_d_p, (0.5 - beta) * dt * dt, _a);
+  }
+  if (_partition.prescribed)
+  {
+    prescribed_values((_elapsed + dt) / _scheme.dt);
+    set_prescribed(_ut, _values);
+  }
   if (_settings.extrapolated_predictor && !_constraint &&
       _system.set_extrapolation(true))
   {
@@ -611,6 +726,7 @@ bool NonlinearNewmark::solve_step(double dt, Vec f_next, int level,
   VecCopy(_at, _a);
   VecCopy(_fint_t, _fint);
   VecCopy(f_next, _f);
+  _elapsed += dt;
   return true;
 }
 } // namespace damseis::dynamics

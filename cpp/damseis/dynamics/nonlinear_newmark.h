@@ -19,6 +19,7 @@
 
 #include "newmark.h"
 #include "newton_constraint.h"
+#include "partitioned_newmark.h"
 #include "tangent_solver.h"
 #include <cstdint>
 #include <functional>
@@ -151,6 +152,25 @@ StepReport solve_static(NonlinearSystem& system, Mat K0, Vec F_from, Vec F_to,
                         linalg::Factorization factorization,
                         const StaticConstraint& constrained = {});
 
+/// The Hughes-Liu implicit-explicit partition (partitioned_newmark.h) in
+/// the nonlinear integrator: the explicit elements (the band next to a
+/// transmitting boundary, linear elastic, lumped mass in M) see only the
+/// predictor d~ = u + dt v + dt^2 (1/2 - beta) a, so their force K_E d~
+/// replaces K_E u' in f_int(u'); the Rayleigh damping's stiffness part is
+/// b_K K_I (the implicit elements alone); the prescribed unknowns (the
+/// boundary's nodes, explicit alone) take their displacements from
+/// `prescribed` once per step (linearly in time within a cut step), rows
+/// and columns of the effective matrix identity. Average acceleration
+/// only (HHT alpha = 0).
+struct Partition
+{
+  /// The implicit elements' stiffness (zero rows at explicit-only nodes).
+  Mat K_implicit = nullptr;
+  /// The explicit elements' stiffness, part of f_int (linear there).
+  Mat K_explicit = nullptr;
+  std::shared_ptr<PrescribedDisplacement> prescribed;
+};
+
 class NonlinearNewmark
 {
 public:
@@ -174,6 +194,14 @@ public:
   /// constraint force joins the effective equation unweighted by HHT's
   /// alpha, as in LinearNewmark.
   void set_constraint(NewtonConstraint* constraint);
+  /// The partition of a transmitting boundary (before set_state; the
+  /// matrices must outlive the integrator). Throws std::invalid_argument
+  /// with HHT alpha != 0 or with a constraint.
+  void set_partition(Partition partition);
+  /// The displacement one step back and the step number n of the state
+  /// (the prescribed displacements' history; set_state sets u and 0).
+  void set_history(Vec u_prev, int n);
+  Vec u_prev() const { return _u_prev; }
   /// Changes the velocity of the last step by dv, the displacement and the
   /// acceleration unchanged (the impact correction of joint pairs that
   /// close; as LinearNewmark::correct_velocity).
@@ -196,6 +224,11 @@ private:
   bool solve_step(double dt, Vec f_next, int level, StepReport& report);
   /// The initial effective matrix for a step dt / 2^level, factorised.
   const linalg::DirectSolver& initial_solver(int level, StepReport& report);
+  /// The prescribed rows' displacements at the end of a (sub)step ending
+  /// at the fraction `theta` of the full step (partition only).
+  void prescribed_values(double theta);
+  /// x[rows] = values (owned rows).
+  void set_prescribed(Vec x, const std::vector<double>& values) const;
 
   Mat _M, _K0;
   Mat _Ce = nullptr; ///< extra damping (not owned), or null
@@ -218,6 +251,15 @@ private:
   Mat _J = nullptr; ///< consistent effective matrix
   std::unique_ptr<TangentSolver> _tangent_solver;
   Vec _u = nullptr, _v = nullptr, _a = nullptr, _f = nullptr, _fint = nullptr;
+  Partition _partition;
+  /// The partition's history: u one step back, the step number, the state
+  /// at the start of the full step, the time of it done (cut steps), the
+  /// prescribed rows' values at its start and end, and of the (sub)step
+  /// being solved.
+  Vec _u_prev = nullptr, _u_start = nullptr, _d_p = nullptr;
+  int _n = 0;
+  double _elapsed = 0.0;
+  std::vector<double> _start_values, _end_values, _values;
   // Work vectors.
   Vec _ut = nullptr, _vt = nullptr, _at = nullptr, _fint_t = nullptr,
       _r = nullptr, _g = nullptr, _w1 = nullptr, _w2 = nullptr, _du = nullptr,
