@@ -72,7 +72,7 @@ expect mesh_too_fine 'koyna\.toml.*mesh\.size.*estimated.*mesh\.max_cells' --set
 expect mesh_size_implausible 'koyna\.toml.*mesh\.size.*0\.001 <= size' --set mesh.size=5e-324
 # The viscous-spring foundation (issue 20).
 expect viscous_spring_without_block 'koyna\.toml.*foundation\.boundary.*foundation\.enabled = true' --set foundation.boundary=viscous_spring
-expect mtf_with_htc 'koyna\.toml.*foundation\.boundary.*HTC' --set foundation.enabled=true --set foundation.boundary=mtf --set mesh.order=1 --set time.dt=0.001 --set material.model=plastic
+expect mtf_with_hht 'koyna\.toml.*time\.hht_alpha.*must be 0.*multi-transmitting' --set foundation.enabled=true --set foundation.boundary=mtf --set mesh.order=1 --set time.dt=0.001 --set material.model=plastic --set time.hht_alpha=-0.1
 expect unknown_boundary 'koyna\.toml.*foundation\.boundary' --set foundation.enabled=true --set foundation.boundary=bogus
 expect split_without_block 'koyna\.toml.*foundation\.split.*foundation\.enabled = true' --set foundation.split=layers
 expect split_below_the_block 'koyna\.toml.*foundation\.split_depth.*foundation\.depth' --set foundation.enabled=true --set foundation.split=layers --set foundation.split_depth=150

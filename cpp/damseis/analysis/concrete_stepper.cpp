@@ -138,6 +138,12 @@ void ConcreteStepper::set_contact(
   _newmark.set_constraint(_contact.get());
 }
 
+void ConcreteStepper::set_partition(dynamics::Partition partition)
+{
+  _newmark.set_partition(std::move(partition));
+  _partitioned = true;
+}
+
 dynamics::StepReport ConcreteStepper::step(Vec f)
 {
   if (_contact)
@@ -163,6 +169,8 @@ void ConcreteStepper::save(engine::Arrays& arrays) const
   for (int i = 0; i < 4; ++i)
     arrays[state_names[i]] = linalg::owned_values(x[i]);
   arrays["newton"] = _totals.to_array();
+  if (_partitioned)
+    arrays["u_prev"] = linalg::owned_values(_newmark.u_prev());
   if (_contact)
     joint::save_contact(_contact->contact(), arrays);
 }
@@ -177,6 +185,12 @@ void ConcreteStepper::restore(const engine::CheckpointData& data)
   }
   _model.restore(data.arrays);
   _totals.from_array(engine::checkpoint_array(data, "newton"));
+  if (_partitioned)
+  {
+    _restored_u_prev = Vector(create_vector(), false);
+    linalg::set_owned_values(_restored_u_prev.vec(),
+                             engine::checkpoint_array(data, "u_prev"));
+  }
   if (_contact)
     joint::restore_contact(data, _contact->contact());
   _step = data.step;
@@ -186,8 +200,11 @@ void ConcreteStepper::resume(Vec f)
 {
   _newmark.set_state(_restored[0].vec(), _restored[1].vec(), _restored[2].vec(),
                      f, _restored[3].vec());
+  if (_partitioned)
+    _newmark.set_history(_restored_u_prev.vec(), _step);
   for (auto& x : _restored)
     x = Vector(nullptr, false);
+  _restored_u_prev = Vector(nullptr, false);
   _system.reset_counts();
 }
 

@@ -75,6 +75,9 @@ public:
   void set_contact(std::shared_ptr<joint::NonlinearContact> contact);
   /// The contact joints (null: none).
   const joint::NonlinearContact* contact() const { return _contact.get(); }
+  /// The implicit-explicit partition of a transmitting boundary (before
+  /// start()); its history (u one step back) goes into checkpoints.
+  void set_partition(dynamics::Partition partition);
 
 private:
   Mat _K0;
@@ -84,6 +87,9 @@ private:
   dolfinx::la::petsc::Vector _u_static, _f_int_static;
   /// u, v, a, f_int read from a checkpoint until resume().
   std::array<dolfinx::la::petsc::Vector, 4> _restored;
+  bool _partitioned = false;
+  /// u one step back read from a checkpoint (a partition) until resume().
+  dolfinx::la::petsc::Vector _restored_u_prev{nullptr, false};
   NewtonTotals _totals;
   int _step = 0;
   std::shared_ptr<joint::NonlinearContact> _contact;

@@ -226,6 +226,11 @@ void check_transmitting_step(const input::Case& c, const GravityDamConfig& g,
 {
   if (g.boundary != FoundationBoundary::transmitting)
     return;
+  if (g.seismic.scheme.alpha != 0.0)
+    c.fail("time.hht_alpha",
+           "must be 0 with a multi-transmitting boundary (the implicit-"
+           "explicit partition is Newmark's average acceleration)",
+           "time.hht_alpha = 0");
   const boundary::Rock rock{largest_E, g.rock.nu, g.rock_rho,
                             g.plane == fem::PlaneMode::plane_stress};
   const double dt = g.seismic.scheme.dt, dx = g.transmitting.spacing;
@@ -384,11 +389,6 @@ GravityDamConfig read_gravity_dam_config(const input::Case& c)
   g.rock_rho = c.real("foundation.rho");
   g.spring_factors = {c.real("foundation.spring_normal"),
                       c.real("foundation.spring_tangential")};
-  if (g.boundary == FoundationBoundary::transmitting &&
-      g.concrete_model.kind != ConcreteModelKind::linear)
-    c.fail("foundation.boundary", "mtf is not yet available with HTC concrete",
-           "material.model = \"linear\" or foundation.boundary = "
-           "\"viscous_spring\"");
   if (c.boolean("study.table6"))
   {
     if (!s.foundation)

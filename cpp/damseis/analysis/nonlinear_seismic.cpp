@@ -14,6 +14,7 @@
 #include "static_stage.h"
 #include "tied_concrete_system.h"
 #include "timed_loads.h"
+#include "transmitting_foundation.h"
 #include "viscous_spring_foundation.h"
 #include <chrono>
 #include <cmath>
@@ -83,6 +84,10 @@ private:
   /// The viscous-spring boundary's springs (K0 and the system's supports),
   /// dashpots and the record's free field.
   void set_up_viscous_spring();
+  /// Liao's multi-transmitting boundary: the partition's operators, the
+  /// formula and the record's free field (the boundary's nodes fixed in
+  /// the modal and static stages).
+  void set_up_transmitting();
   /// Contact joints: the bonded system of the modal stage, the pairs, and
   /// with P2 the midside constraints (sys reduced by them, as by a tie).
   void set_up_contact(SeismicSystem& sys, Mat joint_tie);
@@ -127,6 +132,7 @@ private:
   JointObservers _joints;
   IncidentWaves _waves;
   ViscousSpringParts _vs;
+  std::unique_ptr<TransmittingFoundation> _mtf;
   double _free_field_seconds = 0.0;
   /// The concrete system (on the tied unknowns with ties).
   std::unique_ptr<ConcreteSystem> _system;
@@ -187,7 +193,9 @@ ConcreteSeismicAnalysis::ConcreteSeismicAnalysis(
     _system = std::make_unique<TiedConcreteSystem>(_cm, _tie);
   else
     _system = std::make_unique<ConcreteSystem>(_cm);
-  if (_wave)
+  if (_wave && _wave->mtf)
+    set_up_transmitting();
+  else if (_wave)
     set_up_viscous_spring();
   _plastic = concrete.kind != ConcreteModelKind::elastic;
   _cm.set_implex(concrete.implex && _plastic);
@@ -195,11 +203,21 @@ ConcreteSeismicAnalysis::ConcreteSeismicAnalysis(
     print_crack_band_notes(_comm, fe, _cm, concrete, _bulk.regions);
 }
 
+void ConcreteSeismicAnalysis::set_up_transmitting()
+{
+  if (_tie)
+    throw std::invalid_argument("a multi-transmitting boundary does not yet "
+                                "take joints");
+  if (_loads.initial_velocity)
+    throw std::invalid_argument("an initial velocity is not available with "
+                                "a multi-transmitting boundary");
+  _waves = incident_waves(_fe, _s, *_wave, false);
+  _mtf = std::make_unique<TransmittingFoundation>(
+      _fe, *_wave, _added, _waves.field, *_waves.ground, _s.scheme.dt);
+}
+
 void ConcreteSeismicAnalysis::set_up_viscous_spring()
 {
-  if (_wave->mtf)
-    throw std::invalid_argument("the multi-transmitting boundary is not yet "
-                                "available with HTC concrete");
   _waves = incident_waves(_fe, _s, *_wave, _loads.initial_velocity != nullptr);
   _vs = viscous_spring_parts(_fe, _s, *_wave, *_waves.field, _tie);
   // The springs: in K0 (system unknowns) and, as linear supports, in the
@@ -328,10 +346,14 @@ void ConcreteSeismicAnalysis::time_history()
   _newton = concrete.newton;
   _newton.extrapolated_predictor =
       concrete.newton.extrapolated_predictor && !concrete.implex && _plastic;
+  if (_mtf)
+    _mtf->check_time_step(_modal->damping, _s.scheme);
   _stepper = std::make_unique<ConcreteStepper>(
-      _M.mat(), _K.mat(), _modal->damping, _s.scheme, *_system, _cm, _newton,
-      _s.factorization, _u_static.vec(), _f_int_static.vec(),
-      _wave ? _vs.dashpots.mat() : nullptr);
+      _mtf ? _mtf->mass() : _M.mat(), _K.mat(), _modal->damping, _s.scheme,
+      *_system, _cm, _newton, _s.factorization, _u_static.vec(),
+      _f_int_static.vec(), _wave && !_mtf ? _vs.dashpots.mat() : nullptr);
+  if (_mtf)
+    _stepper->set_partition(_mtf->partition(_u_static.vec()));
   if (_contact)
   {
     _dynamic_contact = std::make_shared<joint::NonlinearContact>(
@@ -377,6 +399,8 @@ void ConcreteSeismicAnalysis::time_history()
 std::unique_ptr<engine::DynamicLoad>
 ConcreteSeismicAnalysis::seismic_load() const
 {
+  if (_mtf)
+    return _mtf->load(_modal->damping, _s.scheme.dt, _F_static.vec());
   if (_wave)
     return std::make_unique<FreeFieldLoad>(
         _fe, _vs.boundary.get(), *_waves.ground, _waves.field, _M.mat(),
@@ -502,9 +526,11 @@ json ConcreteSeismicAnalysis::results()
   }
   if (_wave)
   {
-    summary["foundation"] =
-        wave_foundation_summary(*_wave, *_waves.field, _vs.boundary->measure());
+    summary["foundation"] = wave_foundation_summary(
+        *_wave, *_waves.field, _mtf ? 0.0 : _vs.boundary->measure());
     summary["foundation"]["free_field_load_seconds"] = _free_field_seconds;
+    if (_mtf)
+      summary["foundation"]["mtf"] = _mtf->summary();
   }
   summary["wall_seconds"] = seconds_since(_wall_start);
   print_summary_line(_comm, summary,

@@ -55,10 +55,50 @@ TransmittingFoundation::TransmittingFoundation(
   results::print(fe.mesh()->comm(), line.str());
 }
 
-std::unique_ptr<engine::Stepper>
-TransmittingFoundation::stepper(dynamics::RayleighDamping damping,
-                                const dynamics::TimeScheme& scheme,
-                                linalg::Factorization factorization)
+namespace
+{
+/// The formula on the motion from a static displacement u_s: the values
+/// of u - u_s, plus u_s (the nonlinear engine's state is total).
+class FromStatic : public dynamics::PrescribedDisplacement
+{
+public:
+  FromStatic(std::shared_ptr<fem::MtfBoundary> mtf, Vec u_static)
+      : _mtf(std::move(mtf))
+  {
+    for (Vec* x : {&_us, &_now, &_prev})
+      VecDuplicate(u_static, x);
+    VecCopy(u_static, _us);
+    const std::vector<PetscInt>& rows = _mtf->rows();
+    _static.resize(rows.size());
+    VecGetValues(_us, static_cast<PetscInt>(rows.size()), rows.data(),
+                 _static.data());
+  }
+  ~FromStatic() override
+  {
+    for (Vec* x : {&_us, &_now, &_prev})
+      VecDestroy(x);
+  }
+  FromStatic(const FromStatic&) = delete;
+  FromStatic& operator=(const FromStatic&) = delete;
+  const std::vector<PetscInt>& rows() const override { return _mtf->rows(); }
+  void values(int n_next, Vec u_n, Vec u_prev, std::span<double> out) override
+  {
+    VecWAXPY(_now, -1.0, _us, u_n);
+    VecWAXPY(_prev, -1.0, _us, u_prev);
+    _mtf->values(n_next, _now, _prev, out);
+    for (std::size_t i = 0; i < out.size(); ++i)
+      out[i] += _static[i];
+  }
+
+private:
+  std::shared_ptr<fem::MtfBoundary> _mtf;
+  Vec _us = nullptr, _now = nullptr, _prev = nullptr;
+  std::vector<double> _static;
+};
+} // namespace
+
+void TransmittingFoundation::check_time_step(dynamics::RayleighDamping damping,
+                                             const dynamics::TimeScheme& scheme)
 {
   // 2 % above the power iteration's estimate (it approaches the highest
   // frequency from below); the band takes the mass-proportional damping
@@ -84,16 +124,39 @@ TransmittingFoundation::stepper(dynamics::RayleighDamping damping,
     throw input::InputError("time.hht_alpha must be 0 with a multi-"
                             "transmitting boundary (the partition is "
                             "Newmark's average acceleration)");
+}
+
+std::unique_ptr<engine::Stepper>
+TransmittingFoundation::stepper(dynamics::RayleighDamping damping,
+                                const dynamics::TimeScheme& scheme,
+                                linalg::Factorization factorization)
+{
+  check_time_step(damping, scheme);
   return std::make_unique<engine::PartitionedStepper>(
       _M.mat(), _K.mat(), _K_implicit.mat(), damping, scheme.dt, factorization,
       _mtf);
 }
 
-std::unique_ptr<engine::DynamicLoad>
-TransmittingFoundation::load(dynamics::RayleighDamping damping, double dt) const
+dynamics::Partition TransmittingFoundation::partition(Vec u_static)
 {
-  return std::make_unique<FreeFieldLoad>(
-      _fe, nullptr, _ground, _field, _M.mat(), _K_implicit.mat(), damping, dt);
+  if (!_K_explicit.mat())
+  {
+    Mat K_E;
+    MatDuplicate(_K.mat(), MAT_COPY_VALUES, &K_E);
+    MatAXPY(K_E, -1.0, _K_implicit.mat(), SUBSET_NONZERO_PATTERN);
+    _K_explicit = Matrix(K_E, false);
+  }
+  return {_K_implicit.mat(), _K_explicit.mat(),
+          std::make_shared<FromStatic>(_mtf, u_static)};
+}
+
+std::unique_ptr<engine::DynamicLoad>
+TransmittingFoundation::load(dynamics::RayleighDamping damping, double dt,
+                             Vec sustained) const
+{
+  return std::make_unique<FreeFieldLoad>(_fe, nullptr, _ground, _field,
+                                         _M.mat(), _K_implicit.mat(), damping,
+                                         dt, nullptr, sustained);
 }
 
 nlohmann::json TransmittingFoundation::summary() const

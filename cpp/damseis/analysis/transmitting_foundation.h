@@ -7,6 +7,7 @@
 
 #include "wave_foundation.h"
 #include <damseis/dynamics/newmark.h>
+#include <damseis/dynamics/nonlinear_newmark.h>
 #include <damseis/engine/parts.h>
 #include <damseis/fem/elastic_model.h>
 #include <damseis/fem/mtf_boundary.h>
@@ -30,16 +31,28 @@ public:
                          std::shared_ptr<const boundary::FreeField> field,
                          const geometry::GroundSurface& ground, double dt);
 
-  /// The stepper (the partition) after checking dt against the band's
-  /// stable step with `damping` (stated in the log); input::InputError
-  /// above it or with alpha != 0.
+  /// Checks dt against the band's stable step with `damping` (stated in
+  /// the log); input::InputError above it or with alpha != 0.
+  void check_time_step(dynamics::RayleighDamping damping,
+                       const dynamics::TimeScheme& scheme);
+  /// The stepper (the partition) after check_time_step().
   std::unique_ptr<engine::Stepper> stepper(dynamics::RayleighDamping damping,
                                            const dynamics::TimeScheme& scheme,
                                            linalg::Factorization factorization);
+  /// The partition for the nonlinear engine, whose state is total: the
+  /// formula acts on the motion from the static displacement `u_static`
+  /// (copied; the boundary's nodes are fixed in the static stage), the
+  /// explicit elements' stiffness K - K_I. Call check_time_step() first.
+  dynamics::Partition partition(Vec u_static);
+  /// The mass of the partition: consistent on the implicit elements,
+  /// lumped on the band.
+  Mat mass() const { return _M.mat(); }
   /// The load: C v_ff at every node, C = a_M M + b_K K_I (the prescribed
-  /// nodes carry the rest of the free field).
+  /// nodes carry the rest of the free field), plus `sustained` (the static
+  /// loads of a total-state run; null: none).
   std::unique_ptr<engine::DynamicLoad> load(dynamics::RayleighDamping damping,
-                                            double dt) const;
+                                            double dt,
+                                            Vec sustained = nullptr) const;
   /// The summary's entries of the boundary.
   nlohmann::json summary() const;
 
@@ -49,7 +62,7 @@ private:
   std::shared_ptr<const boundary::FreeField> _field;
   const geometry::GroundSurface& _ground;
   dolfinx::la::petsc::Matrix _K{nullptr, false}, _K_implicit{nullptr, false},
-      _M{nullptr, false};
+      _M{nullptr, false}, _K_explicit{nullptr, false};
   dolfinx::la::petsc::Vector _band_mass{nullptr, false};
   std::shared_ptr<fem::MtfBoundary> _mtf;
   double _omega = 0.0;     ///< the band's highest circular frequency
