@@ -54,8 +54,7 @@ nlohmann::json foundation_study(MPI_Comm comm, const ArchDamConfig& config,
           const std::filesystem::path& dir)
       {
         ArchDamConfig c =
-            with_foundation(config, ratio * config.concrete.E,
-                            boundary == FoundationBoundary::viscous_spring);
+            with_foundation(config, ratio * config.concrete.E, boundary);
         c.foundation_ratios.clear();
         if (!damping_hz.empty())
           c.seismic.damping_frequencies_hz = damping_hz;

@@ -34,11 +34,15 @@ ArchDamModel arch_dam_model(MPI_Comm comm, const ArchDamConfig& cfg)
   dam.E = cfg.concrete_model.params.E;
   m.concrete = cfg.concrete_model;
   m.materials = {{tags::dam, dam}, {tags::foundation, cfg.rock}};
+  if (cfg.geometry.mesh.band_layers > 0)
+    m.materials[tags::foundation_band] = cfg.rock;
   m.fe =
       std::make_unique<fem::ElasticModel>(arch.model, cfg.order, m.materials);
   // A massless foundation is fixed on its far boundaries; rock with mass
-  // is held there by the viscous-spring boundary.
-  if (!cfg.wave)
+  // is held there by the viscous-spring boundary (the multi-transmitting
+  // one: fixed for the static and modal stages, the time history
+  // prescribes it).
+  if (!cfg.wave || cfg.wave->mtf)
     m.fe->fix({tags::foundation_bottom, tags::foundation_sides,
                tags::foundation_upstream, tags::foundation_downstream});
 
@@ -113,8 +117,9 @@ nlohmann::json arch_dam_results(MPI_Comm comm, const ArchDamConfig& cfg,
       (kind == ConcreteModelKind::linear
            ? std::string("linear elastic, ")
            : "HTC concrete (" + to_string(kind) + "), ") +
-      (cfg.wave ? "foundation with mass, viscous-spring boundary"
-                : "massless foundation") +
+      (!cfg.wave       ? "massless foundation"
+       : cfg.wave->mtf ? "foundation with mass, multi-transmitting boundary"
+                       : "foundation with mass, viscous-spring boundary") +
       (model.contact ? ", contact joints" : "");
   std::size_t pairs = 0;
   for (const auto& j : arch.joints)

@@ -1,7 +1,9 @@
 #include "arch_dam_case.h"
 #include "joint_contact_keys.h"
+#include <algorithm>
 #include <damseis/geometry/arch_case.h>
 #include <damseis/geometry/tags.h>
+#include <sstream>
 
 namespace damseis::analysis
 {
@@ -42,8 +44,28 @@ input::Schema arch_dam_schema()
            "as base acceleration; viscous_spring: rock with mass "
            "(rock.rho) and a viscous-spring boundary on its far faces and "
            "bottom, the ground motion as the outcrop motion of vertically "
-           "incident waves",
-           {"fixed", "viscous_spring"});
+           "incident waves; mtf: the same with Liao's multi-transmitting "
+           "boundary on a structured band of explicit elements "
+           "(foundation.band_*, foundation.mtf_*; a V canyon)",
+           {"fixed", "viscous_spring", "mtf"});
+  s.integer("foundation.mtf_order", "2", "-",
+            "order N of the multi-transmitting formula (2 needs mesh.order "
+            "= 1)")
+      .between(1, 3);
+  s.real("foundation.mtf_drift", "0.0001", "-",
+         "drift control gamma_d of the multi-transmitting formula (b = 1 / "
+         "(1 + gamma_d))")
+      .between(0, 0.1);
+  s.integer("foundation.band_layers", "4", "-",
+            "layers of cells in the structured band along the block's "
+            "bottom, sides, upstream and downstream faces (boundary = mtf; "
+            "at least N node spacings)")
+      .between(1, 20);
+  s.real("foundation.band_size", "40.0", "m",
+         "cell size of the structured band (boundary = mtf); its node "
+         "spacing bounds c_p dt / dx <= 1 and its cells the explicit "
+         "band's stable time step")
+      .above(0);
   s.real("foundation.spring_normal", "1.3333333333333333", "-",
          "viscous-spring boundary: normal spring alpha_n G / R (R from the "
          "crown's base; 4/3: Liu et al. 2006)")
@@ -186,6 +208,86 @@ void read_table1_study(const input::Case& c, ArchDamConfig& a, double h)
            "run one model at a time (study.table1 = false)");
 }
 
+/// foundation.boundary = "mtf": the band in the mesh (around the block's
+/// far faces, clear of the valley rims and of the dam), the formula's
+/// order and drift, and the time step against s = c_p dt / dx <= 1 and
+/// HHT alpha = 0 (the explicit band's stable step is checked when the run
+/// has its modes).
+void read_transmitting(const input::Case& c, ArchDamConfig& a,
+                       const geometry::ArchDamGeometry& shape)
+{
+  Transmitting& t = a.transmitting;
+  t.order = static_cast<int>(c.integer("foundation.mtf_order"));
+  t.drift = c.real("foundation.mtf_drift");
+  t.band_region = tags::foundation_band;
+  if (a.boundary != FoundationBoundary::transmitting)
+    return;
+  if (shape.canyon_profile().size() != 2)
+    c.fail("foundation.boundary",
+           "mtf needs a canyon with straight walls (canyon.shape = \"v\"): "
+           "the band's pieces along the walls must be hexahedra",
+           "canyon.shape = \"v\", or foundation.boundary = "
+           "\"viscous_spring\"");
+  if (a.joints == JointModel::contact)
+    c.fail("foundation.boundary", "mtf does not yet take contact joints",
+           "joints.model = \"bonded\", or foundation.boundary = "
+           "\"viscous_spring\" with contact joints");
+  if (a.order != 1)
+    c.fail("mesh.order",
+           "must be 1 with a multi-transmitting boundary in 3D: the band's "
+           "structured tetrahedra have no midside nodes at half spacing "
+           "along the boundary's normals, which the formula's stencils need",
+           "mesh.order = 1 (the dam then needs a finer mesh.size against "
+           "shell locking), or foundation.boundary = \"viscous_spring\"");
+  auto& mesh = a.geometry.mesh;
+  mesh.band_layers = static_cast<int>(c.integer("foundation.band_layers"));
+  mesh.band_size = c.real("foundation.band_size");
+  t.spacing = mesh.band_size / a.order;
+  if (mesh.band_layers * a.order < t.order)
+    c.fail("foundation.band_layers",
+           "is too few for the formula's stencil (N node spacings inward)",
+           "at least " + std::to_string((t.order + a.order - 1) / a.order) +
+               " layers");
+  const double H = shape.height(), w = mesh.band_layers * mesh.band_size;
+  const auto& f = a.geometry.foundation;
+  const double room =
+      H * std::min({f.upstream, f.downstream, f.below, f.beyond});
+  if (!(w < room))
+  {
+    std::ostringstream problem, fix;
+    problem << "makes the band (band_layers x band_size = " << w
+            << " m) reach the dam, the valley's rims or the canyon floor ("
+            << room << " m of rock)";
+    fix << "a band thinner than " << room
+        << " m, or larger foundation.extent_* (multiples of the height)";
+    c.fail("foundation.band_size", problem.str(), fix.str());
+  }
+  if (a.seismic.scheme.alpha != 0.0)
+    c.fail("time.hht_alpha",
+           "must be 0 with a multi-transmitting boundary (the implicit-"
+           "explicit partition is Newmark's average acceleration)",
+           "time.hht_alpha = 0");
+  const boundary::Rock rock{a.rock.E, a.rock.nu, c.real("rock.rho"), false};
+  const double courant = rock.cp() * a.seismic.scheme.dt / t.spacing;
+  if (courant > 1.0)
+  {
+    std::ostringstream problem, fix;
+    problem << "is too large for the multi-transmitting boundary: s = c_p dt "
+               "/ dx = "
+            << courant << " (c_p " << rock.cp() << " m/s, dx " << t.spacing
+            << " m) must be at most 1";
+    fix << "time.dt at most " << t.spacing / rock.cp()
+        << " s, or a larger foundation.band_size";
+    c.fail("time.dt", problem.str(), fix.str());
+  }
+  if (c.boolean("study.foundation"))
+    c.fail("foundation.boundary",
+           "mtf is not yet available in study.foundation (its ratios change "
+           "c_p against the band)",
+           "foundation.boundary = \"fixed\" or \"viscous_spring\" with "
+           "study.foundation, or one run with rock.E");
+}
+
 /// study.joints: every set "none" or distinct candidate labels.
 void read_joint_study(const input::Case& c, ArchDamConfig& a)
 {
@@ -255,8 +357,11 @@ ArchDamConfig read_arch_dam_config(const input::Case& c)
   a.rock_rho = c.real("rock.rho");
   a.spring_factors = {c.real("foundation.spring_normal"),
                       c.real("foundation.spring_tangential")};
-  const bool viscous_spring =
-      c.string("foundation.boundary") == "viscous_spring";
+  const std::string boundary = c.string("foundation.boundary");
+  a.boundary = boundary == "viscous_spring" ? FoundationBoundary::viscous_spring
+               : boundary == "mtf"          ? FoundationBoundary::transmitting
+                                            : FoundationBoundary::fixed;
+  read_transmitting(c, a, shape);
   if (c.boolean("study.foundation"))
   {
     a.foundation_ratios = c.reals("study.foundation_ratios");
@@ -268,8 +373,8 @@ ArchDamConfig read_arch_dam_config(const input::Case& c)
              "one study at a time");
   }
   read_table1_study(c, a, h);
-  if (viscous_spring)
-    a = with_foundation(a, a.rock.E, true);
+  if (a.boundary != FoundationBoundary::fixed)
+    a = with_foundation(a, a.rock.E, a.boundary);
   return a;
 }
 
@@ -282,14 +387,15 @@ ArchDamConfig with_reservoir_level(const ArchDamConfig& a, double level)
 }
 
 ArchDamConfig with_foundation(const ArchDamConfig& cfg, double E_f,
-                              bool viscous_spring)
+                              FoundationBoundary boundary)
 {
   ArchDamConfig a = cfg;
+  const bool with_mass = boundary != FoundationBoundary::fixed;
   a.rock.E = E_f;
-  a.rock.rho = viscous_spring ? a.rock_rho : 0.0;
+  a.rock.rho = with_mass ? a.rock_rho : 0.0;
   a.wave.reset();
   a.seismic.gravity_regions.clear();
-  if (!viscous_spring)
+  if (!with_mass)
     return a;
   const geometry::ArchDamGeometry shape(a.geometry);
   const double h = shape.height();
@@ -304,6 +410,8 @@ ArchDamConfig with_foundation(const ArchDamConfig& cfg, double E_f,
   // its free surface (geometry::GroundSurface).
   w.z_base = -a.geometry.foundation.below * h;
   w.z_surface = w.centre[2];
+  if (boundary == FoundationBoundary::transmitting)
+    w.mtf = a.transmitting;
   a.wave = w;
   a.seismic.gravity_regions = {tags::dam};
   return a;

@@ -36,6 +36,10 @@ struct ArchDamConfig
   /// Rock with mass and a viscous-spring boundary, the ground motion as
   /// vertically incident waves; none: massless, fixed far faces.
   std::optional<WaveFoundation> wave;
+  /// foundation.boundary, and the multi-transmitting boundary's settings
+  /// (its band is in geometry.mesh).
+  FoundationBoundary boundary = FoundationBoundary::fixed;
+  Transmitting transmitting;
   /// The rock's density with mass and the viscous-spring factors.
   double rock_rho = 2640.0;
   boundary::SpringFactors spring_factors{4.0 / 3.0, 2.0 / 3.0};
@@ -73,10 +77,11 @@ input::Schema arch_dam_schema();
 ArchDamConfig read_arch_dam_config(const input::Case& c);
 
 /// The configuration with rock of modulus E_f: massless with fixed far
-/// faces, or (`viscous_spring`) with mass (rock_rho), a viscous-spring
-/// boundary and wave input, the dead weight then on the dam only.
+/// faces (`fixed`), or with mass (rock_rho), a viscous-spring or a multi-
+/// transmitting boundary and wave input, the dead weight then on the dam
+/// only.
 ArchDamConfig with_foundation(const ArchDamConfig& cfg, double E_f,
-                              bool viscous_spring);
+                              FoundationBoundary boundary);
 
 /// The configuration of one run of a joint study: the joints of `set`
 /// ("none": the dam without joints, bonded) active, the rest as `a`.

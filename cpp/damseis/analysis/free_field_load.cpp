@@ -31,8 +31,11 @@ FreeFieldLoad::FreeFieldLoad(const fem::ElasticModel& fe,
     _sustained = linalg::column_vector(K);
     VecCopy(sustained, _sustained.vec());
   }
+  // The full layout (all dofs): the boundary's operators', or the rows of
+  // the tie.
   for (Vector* v : {&_u_b, &_v_b, &_s_b, &_v_all, &_f_full})
-    *v = linalg::column_vector(b ? _Kb.mat() : (tie ? tie : K));
+    *v = b ? linalg::column_vector(_Kb.mat())
+           : (tie ? linalg::row_vector(tie) : linalg::column_vector(K));
   _work = linalg::column_vector(K);
   if (tie)
   {

@@ -172,11 +172,11 @@ void LinearSeismicAnalysis::set_up_wave_foundation(Mat K)
   _free_field = std::move(waves.field);
   if (_wave->mtf)
   {
-    if (_tie || _contact)
+    if (_contact)
       throw std::invalid_argument("a multi-transmitting boundary does not "
-                                  "yet take joints");
+                                  "yet take contact joints");
     _mtf = std::make_unique<TransmittingFoundation>(
-        _fe, *_wave, _added, _free_field, *_ground, _s.scheme.dt);
+        _fe, *_wave, _added, _free_field, *_ground, _s.scheme.dt, _tie);
     return;
   }
   ViscousSpringParts vs =

@@ -205,15 +205,15 @@ ConcreteSeismicAnalysis::ConcreteSeismicAnalysis(
 
 void ConcreteSeismicAnalysis::set_up_transmitting()
 {
-  if (_tie)
+  if (_contact)
     throw std::invalid_argument("a multi-transmitting boundary does not yet "
-                                "take joints");
+                                "take contact joints");
   if (_loads.initial_velocity)
     throw std::invalid_argument("an initial velocity is not available with "
                                 "a multi-transmitting boundary");
   _waves = incident_waves(_fe, _s, *_wave, false);
   _mtf = std::make_unique<TransmittingFoundation>(
-      _fe, *_wave, _added, _waves.field, *_waves.ground, _s.scheme.dt);
+      _fe, *_wave, _added, _waves.field, *_waves.ground, _s.scheme.dt, _tie);
 }
 
 void ConcreteSeismicAnalysis::set_up_viscous_spring()
@@ -239,7 +239,7 @@ void ConcreteSeismicAnalysis::set_up_contact(SeismicSystem& sys, Mat joint_tie)
                                 "joints for the modal stage");
   if (_wave && _wave->mtf)
     throw std::invalid_argument("a multi-transmitting boundary does not yet "
-                                "take joints");
+                                "take contact joints");
   // The modes of the joints bonded (the natural frequencies and the
   // Rayleigh damping of the closed dam).
   _K_bonded = Matrix(fem::reduce_to_tied(sys.K.mat(), joint_tie), false);

@@ -3,7 +3,9 @@
 #include "run_outputs.h"
 #include <damseis/dynamics/partitioned_newmark.h>
 #include <damseis/engine/partitioned_stepper.h>
+#include <damseis/fem/tied_dofs.h>
 #include <damseis/input/case.h>
+#include <damseis/linalg/petsc_vectors.h>
 #include <damseis/results/progress.h>
 #include <numbers>
 #include <sstream>
@@ -13,12 +15,82 @@ namespace damseis::analysis
 using dolfinx::la::petsc::Matrix;
 using dolfinx::la::petsc::Vector;
 
+namespace
+{
+/// A prescribed displacement of all dofs on the tied unknowns u_r (u = P
+/// u_r): its values from P u_r, its rows the unknowns its dofs alone give
+/// (untied dofs: P's column is theirs alone).
+class TiedPrescribed : public dynamics::PrescribedDisplacement
+{
+public:
+  TiedPrescribed(std::shared_ptr<dynamics::PrescribedDisplacement> inner, Mat P)
+      : _inner(std::move(inner)), _P(P)
+  {
+    MatCreateVecs(P, &_reduced, &_full);
+    VecDuplicate(_full, &_full_prev);
+    const std::vector<PetscInt>& rows = _inner->rows();
+    _inner_values.resize(rows.size());
+    std::vector<PetscScalar> ones(rows.size(), 1.0);
+    VecSet(_full, 0.0);
+    VecSetValues(_full, static_cast<PetscInt>(rows.size()), rows.data(),
+                 ones.data(), INSERT_VALUES);
+    VecAssemblyBegin(_full);
+    VecAssemblyEnd(_full);
+    MatMultTranspose(P, _full, _reduced);
+    PetscInt r0 = 0, r1 = 0;
+    VecGetOwnershipRange(_reduced, &r0, &r1);
+    const double* r = nullptr;
+    VecGetArrayRead(_reduced, &r);
+    for (PetscInt i = r0; i < r1; ++i)
+    {
+      if (r[i - r0] > 1.5)
+        throw std::invalid_argument("a transmitting boundary's node is tied "
+                                    "(a joint reaches the boundary)");
+      if (r[i - r0] > 0.5)
+        _rows.push_back(i);
+    }
+    VecRestoreArrayRead(_reduced, &r);
+  }
+  ~TiedPrescribed() override
+  {
+    for (Vec* x : {&_reduced, &_full, &_full_prev})
+      VecDestroy(x);
+  }
+  TiedPrescribed(const TiedPrescribed&) = delete;
+  TiedPrescribed& operator=(const TiedPrescribed&) = delete;
+  const std::vector<PetscInt>& rows() const override { return _rows; }
+  void values(int n_next, Vec u_n, Vec u_prev, std::span<double> out) override
+  {
+    MatMult(_P, u_n, _full);
+    MatMult(_P, u_prev, _full_prev);
+    _inner->values(n_next, _full, _full_prev, _inner_values);
+    // The values on the full layout, then onto the tied unknowns.
+    const std::vector<PetscInt>& rows = _inner->rows();
+    VecSet(_full, 0.0);
+    VecSetValues(_full, static_cast<PetscInt>(rows.size()), rows.data(),
+                 _inner_values.data(), INSERT_VALUES);
+    VecAssemblyBegin(_full);
+    VecAssemblyEnd(_full);
+    MatMultTranspose(_P, _full, _reduced);
+    VecGetValues(_reduced, static_cast<PetscInt>(_rows.size()), _rows.data(),
+                 out.data());
+  }
+
+private:
+  std::shared_ptr<dynamics::PrescribedDisplacement> _inner;
+  Mat _P;
+  Vec _reduced = nullptr, _full = nullptr, _full_prev = nullptr;
+  std::vector<PetscInt> _rows;
+  std::vector<double> _inner_values;
+};
+} // namespace
+
 TransmittingFoundation::TransmittingFoundation(
     const fem::ElasticModel& fe, const WaveFoundation& wave,
     const fem::Reservoir* reservoir,
     std::shared_ptr<const boundary::FreeField> field,
-    const geometry::GroundSurface& ground, double dt)
-    : _fe(fe), _wave(wave), _field(std::move(field)), _ground(ground)
+    const geometry::GroundSurface& ground, double dt, Mat tie)
+    : _fe(fe), _wave(wave), _field(std::move(field)), _ground(ground), _tie(tie)
 {
   const Transmitting& t = *wave.mtf;
   // The band's cells are the explicit group.
@@ -40,8 +112,19 @@ TransmittingFoundation::TransmittingFoundation(
   _mtf = std::make_shared<fem::MtfBoundary>(
       *fe.V(), *fe.model().facet_tags, wave.boundary_tags, band, m,
       separated_field(_field, ground, dt));
-  _omega = dynamics::highest_explicit_frequency(_K.mat(), _K_implicit.mat(),
-                                                _band_mass.vec(), _mtf->rows());
+  _prescribed = _mtf;
+  if (tie)
+  {
+    // The tied unknowns: P^T A P, the band's lumped mass P^T m.
+    for (Matrix* A : {&_K, &_K_implicit, &_M})
+      *A = Matrix(fem::reduce_to_tied(A->mat(), tie), false);
+    Vector mass = linalg::column_vector(_K.mat());
+    MatMultTranspose(tie, _band_mass.vec(), mass.vec());
+    _band_mass = std::move(mass);
+    _prescribed = std::make_shared<TiedPrescribed>(_mtf, tie);
+  }
+  _omega = dynamics::highest_explicit_frequency(
+      _K.mat(), _K_implicit.mat(), _band_mass.vec(), _prescribed->rows());
   const auto nodes = _mtf->node_counts();
   std::ostringstream line;
   line << "foundation with mass, multi-transmitting boundary (order " << t.order
@@ -62,7 +145,8 @@ namespace
 class FromStatic : public dynamics::PrescribedDisplacement
 {
 public:
-  FromStatic(std::shared_ptr<fem::MtfBoundary> mtf, Vec u_static)
+  FromStatic(std::shared_ptr<dynamics::PrescribedDisplacement> mtf,
+             Vec u_static)
       : _mtf(std::move(mtf))
   {
     for (Vec* x : {&_us, &_now, &_prev})
@@ -91,7 +175,7 @@ public:
   }
 
 private:
-  std::shared_ptr<fem::MtfBoundary> _mtf;
+  std::shared_ptr<dynamics::PrescribedDisplacement> _mtf;
   Vec _us = nullptr, _now = nullptr, _prev = nullptr;
   std::vector<double> _static;
 };
@@ -134,7 +218,7 @@ TransmittingFoundation::stepper(dynamics::RayleighDamping damping,
   check_time_step(damping, scheme);
   return std::make_unique<engine::PartitionedStepper>(
       _M.mat(), _K.mat(), _K_implicit.mat(), damping, scheme.dt, factorization,
-      _mtf);
+      _prescribed);
 }
 
 dynamics::Partition TransmittingFoundation::partition(Vec u_static)
@@ -147,7 +231,7 @@ dynamics::Partition TransmittingFoundation::partition(Vec u_static)
     _K_explicit = Matrix(K_E, false);
   }
   return {_K_implicit.mat(), _K_explicit.mat(),
-          std::make_shared<FromStatic>(_mtf, u_static)};
+          std::make_shared<FromStatic>(_prescribed, u_static)};
 }
 
 std::unique_ptr<engine::DynamicLoad>
@@ -156,7 +240,7 @@ TransmittingFoundation::load(dynamics::RayleighDamping damping, double dt,
 {
   return std::make_unique<FreeFieldLoad>(_fe, nullptr, _ground, _field,
                                          _M.mat(), _K_implicit.mat(), damping,
-                                         dt, nullptr, sustained);
+                                         dt, _tie, sustained);
 }
 
 nlohmann::json TransmittingFoundation::summary() const

@@ -25,11 +25,16 @@ public:
   /// `field` over `ground` (both must outlive this), the band's highest
   /// frequency; prints the boundary's line. Collective; throws
   /// std::invalid_argument if the mesh has no band for the formula.
+  /// With bonded joints (`tie`, u = P u_r; null: none) the operators,
+  /// the band's mass and the prescribed rows are those of the tied
+  /// unknowns (the band's nodes are not tied: its rows keep their
+  /// values).
   TransmittingFoundation(const fem::ElasticModel& fe,
                          const WaveFoundation& wave,
                          const fem::Reservoir* reservoir,
                          std::shared_ptr<const boundary::FreeField> field,
-                         const geometry::GroundSurface& ground, double dt);
+                         const geometry::GroundSurface& ground, double dt,
+                         Mat tie = nullptr);
 
   /// Checks dt against the band's stable step with `damping` (stated in
   /// the log); input::InputError above it or with alpha != 0.
@@ -64,7 +69,10 @@ private:
   dolfinx::la::petsc::Matrix _K{nullptr, false}, _K_implicit{nullptr, false},
       _M{nullptr, false}, _K_explicit{nullptr, false};
   dolfinx::la::petsc::Vector _band_mass{nullptr, false};
+  Mat _tie = nullptr;
   std::shared_ptr<fem::MtfBoundary> _mtf;
+  /// The formula on the system's unknowns (_mtf itself without a tie).
+  std::shared_ptr<dynamics::PrescribedDisplacement> _prescribed;
   double _omega = 0.0;     ///< the band's highest circular frequency
   double _stable_dt = 0.0; ///< set by stepper()
 };

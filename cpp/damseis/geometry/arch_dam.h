@@ -125,6 +125,12 @@ struct ArchMeshOptions
   /// height: the dam is cut at this elevation (the mesh follows the water
   /// line) and the upstream face below it is tagged upstream_wetted.
   double water_level = 0;
+  /// A structured band of `band_layers` layers of cells of `band_size` [m]
+  /// along the foundation block's bottom, sides and upstream and
+  /// downstream faces (a transmitting boundary's explicit band; 0: none).
+  /// The canyon's walls must be straight (a V canyon).
+  int band_layers = 0;
+  double band_size = 0;
 };
 
 /// Everything that defines an arch-dam model.

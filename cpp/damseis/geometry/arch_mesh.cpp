@@ -1,6 +1,7 @@
 // 3D arch dam + canyon + foundation: gmsh/OCC construction, meshing, joint
 // splitting and distribution.
 #include "arch_mesh.h"
+#include "arch_band.h"
 #include "model_arrays.h"
 #include "tags.h"
 
@@ -214,6 +215,9 @@ MeshArrays build_on_root(const ArchDamGeometry& g, bool verbose)
                              std::to_string(rock.size()) + " rock and " +
                              std::to_string(dam.size()) +
                              " dam volumes (expected 1 and 1)");
+  const double band_w = mo.band_layers * mo.band_size;
+  if (mo.band_layers > 0)
+    rock = split_band(g, e, rock, band_w);
 
   stage("valley, foundation and dam booleans done");
   // Cuts the dam blocks with tool surfaces; drops the tool parts outside.
@@ -265,10 +269,20 @@ MeshArrays build_on_root(const ArchDamGeometry& g, bool verbose)
   occ::fragment(rock, dam, out, map);
   occ::synchronize();
   stage("dam-foundation fragment (OCC) done");
-  std::vector<int> rock_vols, dam_vols;
-  for (const auto& dt : map[0])
-    rock_vols.push_back(dt.second);
-  for (std::size_t i = 1; i < map.size(); ++i)
+  std::vector<int> rock_vols, band_vols, dam_vols;
+  const std::size_t n_rock = rock.size();
+  for (std::size_t i = 0; i < n_rock; ++i)
+    for (const auto& dt : map[i])
+    {
+      double cx, cy, cz;
+      occ::getCenterOfMass(3, dt.second, cx, cy, cz);
+      const bool in_band =
+          mo.band_layers > 0 &&
+          (cx < e.x0 + band_w || cx > e.x1 - band_w || cy < e.y0 + band_w ||
+           cy > e.y1 - band_w || cz < e.z0 + band_w);
+      (in_band ? band_vols : rock_vols).push_back(dt.second);
+    }
+  for (std::size_t i = n_rock; i < map.size(); ++i)
     for (const auto& dt : map[i])
       dam_vols.push_back(dt.second);
   const std::set<int> dam_set(dam_vols.begin(), dam_vols.end());
@@ -311,8 +325,10 @@ MeshArrays build_on_root(const ArchDamGeometry& g, bool verbose)
         throw std::runtime_error("arch dam: an internal dam surface is on "
                                  "no joint plane");
     }
-    else if (up.size() == 2)
+    else if (up.size() == 2 and ndam == 1)
       tag = tags::dam_base;
+    else if (up.size() == 2)
+      continue; // between the band's pieces and the core: interior
     else if (ndam == 1)
     {
       if (bz0 > H - tol)
@@ -354,6 +370,13 @@ MeshArrays build_on_root(const ArchDamGeometry& g, bool verbose)
   gmsh::model::addPhysicalGroup(3, rock_vols, tags::foundation);
   gmsh::model::setPhysicalName(3, tags::foundation,
                                tags::region_name(tags::foundation));
+  if (!band_vols.empty())
+  {
+    gmsh::model::addPhysicalGroup(3, band_vols, tags::foundation_band);
+    gmsh::model::setPhysicalName(3, tags::foundation_band,
+                                 tags::region_name(tags::foundation_band));
+    structure_band(g, e, band_w, mo.band_size, band_vols);
+  }
   for (const auto& [tag, s] : groups)
   {
     gmsh::model::addPhysicalGroup(2, s, tag);

@@ -55,7 +55,9 @@ struct ArchModel
 /// the mesh follows the water line, the upstream face below it is tagged
 /// upstream_wetted and upstream_face keeps the dry part above it (the
 /// forms load both tags).
-/// Cell tags: dam, foundation. Joint nodes are duplicated except on the
+/// Cell tags: dam, foundation (and foundation_band: with
+/// ArchMeshOptions::band_layers the structured band of a transmitting
+/// boundary, geometry/arch_band). Joint nodes are duplicated except on the
 /// dam-foundation interface (see split_joints).
 ///
 /// gmsh is initialised and finalised here on rank 0 (it must not be in

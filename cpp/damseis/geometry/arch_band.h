@@ -1,0 +1,31 @@
+// The structured band of a transmitting boundary in the arch dam's
+// foundation block (geometry/arch_mesh): the rock within a band's width of
+// the block's bottom, sides, upstream and downstream faces, cut into
+// topological hexahedra and meshed as transfinite (structured)
+// tetrahedra, so that every boundary node has the nodes of Liao's formula
+// at uniform spacing along its normal (fem/MtfBoundary). The canyon's
+// walls must be straight (a V canyon): the pieces beside them are
+// trapezoids bounded by one wall face. gmsh (OCC) on rank 0.
+#pragma once
+
+#include "arch_dam.h"
+#include <gmsh.h>
+#include <vector>
+
+namespace damseis::geometry
+{
+/// The rock block `rock` cut into its core (inside the band) and the
+/// band's pieces: the band (the rock within `w` of the block's bottom,
+/// sides, upstream and downstream faces) fragmented by the planes of the
+/// band's inner faces, of the canyon floor's edges and of the floor level.
+/// Returns the core first, then the pieces (OCC, synchronised).
+gmsh::vectorpair split_band(const ArchDamGeometry& g, const ModelBox& e,
+                            const gmsh::vectorpair& rock, double w);
+
+/// Sets the band's volumes (after the model's last boolean) to be meshed as
+/// structured tetrahedra of about `h`: the node count of each curve by its
+/// interval, opposite edges of every piece equal. Throws
+/// std::runtime_error if a piece is not a hexahedron.
+void structure_band(const ArchDamGeometry& g, const ModelBox& e, double w,
+                    double h, const std::vector<int>& band_volumes);
+} // namespace damseis::geometry
