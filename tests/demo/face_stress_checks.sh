@@ -15,7 +15,9 @@
 # elements across the depth; measured 0.78%); the "cantilever" stress
 # (vertical in the face, sigma_zz ~ rho g h) below 2% of the bending stress
 # (measured 0.45%); 2 ranks give the serial table (1e-7 MPa; measured
-# 1e-9, the digits written).
+# 1e-9, the digits written): the same nodes, and at each the same
+# stresses (the times of the extremes of a static stress are round-off's
+# choice).
 # Usage: face_stress_checks.sh DAM_MODEL MPIEXEC PYTHON SOURCE_DIR
 set -eu
 dm=$1 mpiexec=$2 python=$3 src=$4
@@ -59,8 +61,23 @@ check("arch stress = beam bending stress", n >= 10 and worst < 0.02,
 check("cantilever stress small", n >= 10 and cant < 0.02,
       f"largest |cantilever| / bending {cant:.2%}")
 other = table("ranks2")
-d = max((abs(a - b) for ra, rb in zip(rows, other) for a, b in zip(ra[:-1], rb[:-1])),
-        default=float("inf"))
+# A node appears once per cell of the face around it, each cell with its
+# own stresses, so rows are matched per node: each stress column's values
+# there as a set (sorting whole rows paired them wrongly in 1 run of 15,
+# when two cells' arch stresses differed in the last digit written and
+# their order flipped). Not the times of the extremes: the stress is
+# static here, so the step where it peaks is round-off's choice.
+def by_node(t):
+    nodes = {}
+    for r in t:
+        nodes.setdefault(tuple(round(v, 6) for v in r[:3]), []).append(r)
+    return nodes
+na, nb = by_node(rows), by_node(other)
+d = float("inf")
+if na.keys() == nb.keys() and all(len(na[k]) == len(nb[k]) for k in na):
+    d = max((abs(a - b) for k in na for i in (3, 5, 7, 9)
+             for a, b in zip(sorted(r[i] for r in na[k]),
+                             sorted(r[i] for r in nb[k]))), default=0.0)
 check("2 ranks = serial", len(rows) == len(other) and d < 1e-8 * 10,
       f"{len(rows)} points, largest difference {d:.1e}")
 sys.exit(1 if failures else 0)
