@@ -1,4 +1,5 @@
 #include "arch_band.h"
+#include "occ_cuts.h"
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -51,21 +52,7 @@ gmsh::vectorpair split_band(const ArchDamGeometry& g, const ModelBox& e,
                             plane(0, g.x_left(0.0)), plane(0, g.x_right(0.0)),
                             plane(1, e.y0 + w),      plane(1, e.y1 - w),
                             plane(2, e.z0 + w),      plane(2, 0.0)};
-  gmsh::vectorpair out;
-  occ::fragment(band, tools, out, map);
-  gmsh::vectorpair pieces, loose;
-  for (const auto& dt : out)
-    (dt.first == 3 ? pieces : loose).push_back(dt);
-  occ::synchronize();
-  gmsh::vectorpair drop;
-  for (const auto& [d, t] : loose)
-  {
-    std::vector<int> up, down;
-    gmsh::model::getAdjacencies(d, t, up, down);
-    if (up.empty())
-      drop.push_back({d, t});
-  }
-  occ::remove(drop, true);
+  const gmsh::vectorpair pieces = cut_by_surfaces(band, tools);
   gmsh::vectorpair all = core;
   all.insert(all.end(), pieces.begin(), pieces.end());
   return all;

@@ -3,6 +3,7 @@
 #include "arch_mesh.h"
 #include "arch_band.h"
 #include "model_arrays.h"
+#include "occ_cuts.h"
 #include "tags.h"
 
 #include <algorithm>
@@ -222,24 +223,7 @@ MeshArrays build_on_root(const ArchDamGeometry& g, bool verbose)
   stage("valley, foundation and dam booleans done");
   // Cuts the dam blocks with tool surfaces; drops the tool parts outside.
   auto cut_dam = [&](const gmsh::vectorpair& tools)
-  {
-    gmsh::vectorpair out;
-    occ::fragment(dam, tools, out, map);
-    dam.clear();
-    gmsh::vectorpair loose;
-    for (const auto& dt : out)
-      (dt.first == 3 ? dam : loose).push_back(dt);
-    occ::synchronize();
-    gmsh::vectorpair drop;
-    for (const auto& [d, t] : loose)
-    {
-      std::vector<int> up, down;
-      gmsh::model::getAdjacencies(d, t, up, down);
-      if (up.empty())
-        drop.push_back({d, t});
-    }
-    occ::remove(drop, true);
-  };
+  { dam = cut_by_surfaces(dam, tools); };
   // Joints: cut the dam with the joint planes
   const std::vector<JointPlane> planes = g.joint_planes();
   if (!planes.empty())
