@@ -1,5 +1,6 @@
 #include "initial_motion.h"
 #include <damseis/fem/tied_dofs.h>
+#include <damseis/linalg/duplicate_matrix.h>
 #include <damseis/linalg/petsc_vectors.h>
 
 namespace damseis::analysis
@@ -28,8 +29,7 @@ InitialMotion initial_motion(MPI_Comm comm, Mat M, Mat K,
   MatMult(K, s.v0.vec(), Kv.vec());
   VecAXPBY(r.vec(), -damping.b_stiffness, -damping.a_mass, Kv.vec());
   // M with 1 on the diagonal of the rows without mass, and r = 0 there.
-  Mat Mr;
-  MatDuplicate(M, MAT_COPY_VALUES, &Mr);
+  Mat Mr = linalg::duplicate_matrix(M, MAT_COPY_VALUES);
   Matrix M_reg(Mr, false);
   Vector d = linalg::column_vector(K);
   MatGetDiagonal(Mr, d.vec());

@@ -5,6 +5,7 @@
 #include <damseis/engine/partitioned_stepper.h>
 #include <damseis/fem/tied_dofs.h>
 #include <damseis/input/case.h>
+#include <damseis/linalg/duplicate_matrix.h>
 #include <damseis/linalg/petsc_vectors.h>
 #include <damseis/results/progress.h>
 #include <numbers>
@@ -225,8 +226,7 @@ dynamics::Partition TransmittingFoundation::partition(Vec u_static)
 {
   if (!_K_explicit.mat())
   {
-    Mat K_E;
-    MatDuplicate(_K.mat(), MAT_COPY_VALUES, &K_E);
+    Mat K_E = linalg::duplicate_matrix(_K.mat(), MAT_COPY_VALUES);
     MatAXPY(K_E, -1.0, _K_implicit.mat(), SUBSET_NONZERO_PATTERN);
     _K_explicit = Matrix(K_E, false);
   }

@@ -1,5 +1,6 @@
 #include "newmark.h"
 #include <cmath>
+#include <damseis/linalg/duplicate_matrix.h>
 #include <numbers>
 #include <stdexcept>
 #include <vector>
@@ -80,14 +81,14 @@ LinearNewmark::LinearNewmark(Mat M, Mat K, RayleighDamping damping,
   //       = (a0 + (1 + alpha) a1 a_M) M + (1 + alpha)(1 + a1 b_K) K.
   _cM = a0 + (1.0 + alpha) * a1 * damping.a_mass;
   _cK = (1.0 + alpha) * (1.0 + a1 * damping.b_stiffness);
-  MatDuplicate(K, MAT_COPY_VALUES, &_Keff);
+  _Keff = linalg::duplicate_matrix(K, MAT_COPY_VALUES);
   MatScale(_Keff, _cK);
   MatAXPY(_Keff, _cM, M, SUBSET_NONZERO_PATTERN);
   // Extra damping C_e (summed once): K_eff += (1 + alpha) a1 C_e.
   for (Mat C : extra_damping)
   {
     if (!_Ce)
-      MatDuplicate(C, MAT_COPY_VALUES, &_Ce);
+      _Ce = linalg::duplicate_matrix(C, MAT_COPY_VALUES);
     else
       MatAXPY(_Ce, 1.0, C, DIFFERENT_NONZERO_PATTERN);
   }

@@ -2,6 +2,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <damseis/linalg/duplicate_matrix.h>
 #include <limits>
 #include <stdexcept>
 
@@ -145,7 +146,7 @@ PartitionedNewmark::PartitionedNewmark(
     throw std::invalid_argument("time step must be positive");
   // A = (1 + gamma dt a_M) M + (gamma dt b_K + beta dt^2) K_I, the
   // prescribed rows identity.
-  MatDuplicate(K_implicit, MAT_COPY_VALUES, &_A);
+  _A = linalg::duplicate_matrix(K_implicit, MAT_COPY_VALUES);
   MatScale(_A, _gamma * dt * damping.b_stiffness + _beta * dt * dt);
   MatAXPY(_A, 1.0 + _gamma * dt * damping.a_mass, M, DIFFERENT_NONZERO_PATTERN);
   const std::vector<PetscInt> none;

@@ -1,6 +1,7 @@
 #include "static_contact.h"
 #include <algorithm>
 #include <cmath>
+#include <damseis/linalg/duplicate_matrix.h>
 #include <damseis/linalg/petsc_vectors.h>
 #include <sstream>
 
@@ -87,8 +88,7 @@ StaticContactResult static_contact(Mat K, Mat M, double omega_1, Vec F_dead,
   ncp.min_iterations = std::max(ncp.min_iterations, 1);
   StaticContactResult r;
   r.shift = static_shift_factor * omega_1 * omega_1;
-  Mat Ks;
-  MatDuplicate(K, MAT_COPY_VALUES, &Ks);
+  Mat Ks = linalg::duplicate_matrix(K, MAT_COPY_VALUES);
   MatAXPY(Ks, r.shift, M, SUBSET_NONZERO_PATTERN);
   dolfinx::la::petsc::Matrix K_shifted(Ks, false);
   CondensedContact c(pairs, ncp);
