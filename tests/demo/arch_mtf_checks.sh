@@ -69,4 +69,6 @@ expect mtf_band_too_thick 'foundation\.band_size.*reach' "${mtf[@]}" \
 expect mtf_contact 'foundation\.boundary.*contact joints' "${mtf[@]}" \
   --set joints.model=contact
 expect mtf_hht 'time\.hht_alpha.*must be 0' "${mtf[@]}" --set time.hht_alpha=-0.1
+expect mtf_band_too_thin 'foundation\.band_layers.*at least 4 layers' \
+  "${mtf[@]}" --set foundation.band_layers=3
 [ "$failures" -eq 0 ]

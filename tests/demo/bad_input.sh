@@ -86,6 +86,9 @@ expect mtf_courant_above_one 'koyna\.toml.*time\.dt.*multi-transmitting.*at most
 expect mtf_above_stable_step 'time\.dt = 0\.0028 s is above the stable step' "${mtf[@]}" --set mesh.order=1 --set mesh.size=4 --set foundation.band_size=10 --set time.dt=0.0028
 expect mtf_split_block 'koyna\.toml.*foundation\.boundary.*split' "${mtf[@]}" --set mesh.order=1 --set foundation.split=layers
 expect mtf_band_too_thick 'koyna\.toml.*foundation\.band_size' "${mtf[@]}" --set mesh.order=1 --set foundation.band_size=40 --set time.dt=0.001
+# The stencil reads 2N = 4 node spacings inward: 3 layers of P1 are too few
+# (checked before the mesh is built; the formula's own check came only after).
+expect mtf_band_too_thin 'koyna\.toml.*foundation\.band_layers.*2N = 4.*at least 4 layers' "${mtf[@]}" --set mesh.order=1 --set foundation.band_layers=3 --set time.dt=0.001
 expect rock_density_implausible 'koyna\.toml.*foundation\.rho' --set foundation.enabled=true --set foundation.boundary=viscous_spring --set foundation.rho=0
 
 if [ "$failures" -ne 0 ]; then

@@ -1,5 +1,6 @@
 #include "arch_dam_case.h"
 #include "joint_contact_keys.h"
+#include "transmitting_keys.h"
 #include <algorithm>
 #include <damseis/geometry/arch_case.h>
 #include <damseis/geometry/tags.h>
@@ -48,24 +49,8 @@ input::Schema arch_dam_schema()
            "boundary on a structured band of explicit elements "
            "(foundation.band_*, foundation.mtf_*; a V canyon)",
            {"fixed", "viscous_spring", "mtf"});
-  s.integer("foundation.mtf_order", "2", "-",
-            "order N of the multi-transmitting formula (2 needs mesh.order "
-            "= 1)")
-      .between(1, 3);
-  s.real("foundation.mtf_drift", "0.0001", "-",
-         "drift control gamma_d of the multi-transmitting formula (b = 1 / "
-         "(1 + gamma_d))")
-      .between(0, 0.1);
-  s.integer("foundation.band_layers", "4", "-",
-            "layers of cells in the structured band along the block's "
-            "bottom, sides, upstream and downstream faces (boundary = mtf; "
-            "at least N node spacings)")
-      .between(1, 20);
-  s.real("foundation.band_size", "40.0", "m",
-         "cell size of the structured band (boundary = mtf); its node "
-         "spacing bounds c_p dt / dx <= 1 and its cells the explicit "
-         "band's stable time step")
-      .above(0);
+  add_transmitting_keys(s, "bottom, sides, upstream and downstream faces",
+                        "40.0");
   s.real("foundation.spring_normal", "1.3333333333333333", "-",
          "viscous-spring boundary: normal spring alpha_n G / R (R from the "
          "crown's base; 4/3: Liu et al. 2006)")
@@ -216,38 +201,36 @@ void read_table1_study(const input::Case& c, ArchDamConfig& a, double h)
 void read_transmitting(const input::Case& c, ArchDamConfig& a,
                        const geometry::ArchDamGeometry& shape)
 {
-  Transmitting& t = a.transmitting;
-  t.order = static_cast<int>(c.integer("foundation.mtf_order"));
-  t.drift = c.real("foundation.mtf_drift");
-  t.band_region = tags::foundation_band;
-  if (a.boundary != FoundationBoundary::transmitting)
+  const bool active = a.boundary == FoundationBoundary::transmitting;
+  if (active)
+  {
+    if (shape.canyon_profile().size() != 2)
+      c.fail("foundation.boundary",
+             "mtf needs a canyon with straight walls (canyon.shape = \"v\"): "
+             "the band's pieces along the walls must be hexahedra",
+             "canyon.shape = \"v\", or foundation.boundary = "
+             "\"viscous_spring\"");
+    if (a.joints == JointModel::contact)
+      c.fail("foundation.boundary", "mtf does not yet take contact joints",
+             "joints.model = \"bonded\", or foundation.boundary = "
+             "\"viscous_spring\" with contact joints");
+    if (a.order != 1)
+      c.fail("mesh.order",
+             "must be 1 with a multi-transmitting boundary in 3D: the band's "
+             "structured tetrahedra have no midside nodes at half spacing "
+             "along the boundary's normals, which the formula's stencils "
+             "need",
+             "mesh.order = 1 (the dam then needs a finer mesh.size against "
+             "shell locking), or foundation.boundary = \"viscous_spring\"");
+  }
+  BandKeys band;
+  a.transmitting = read_transmitting_keys(c, a.order, active, band);
+  if (!active)
     return;
-  if (shape.canyon_profile().size() != 2)
-    c.fail("foundation.boundary",
-           "mtf needs a canyon with straight walls (canyon.shape = \"v\"): "
-           "the band's pieces along the walls must be hexahedra",
-           "canyon.shape = \"v\", or foundation.boundary = "
-           "\"viscous_spring\"");
-  if (a.joints == JointModel::contact)
-    c.fail("foundation.boundary", "mtf does not yet take contact joints",
-           "joints.model = \"bonded\", or foundation.boundary = "
-           "\"viscous_spring\" with contact joints");
-  if (a.order != 1)
-    c.fail("mesh.order",
-           "must be 1 with a multi-transmitting boundary in 3D: the band's "
-           "structured tetrahedra have no midside nodes at half spacing "
-           "along the boundary's normals, which the formula's stencils need",
-           "mesh.order = 1 (the dam then needs a finer mesh.size against "
-           "shell locking), or foundation.boundary = \"viscous_spring\"");
+  const Transmitting& t = a.transmitting;
   auto& mesh = a.geometry.mesh;
-  mesh.band_layers = static_cast<int>(c.integer("foundation.band_layers"));
-  mesh.band_size = c.real("foundation.band_size");
-  t.spacing = mesh.band_size / a.order;
-  if (mesh.band_layers * a.order < t.order)
-    c.fail("foundation.band_layers",
-           "is too few for the formula's stencil (N node spacings inward)",
-           "at least " + std::to_string((t.order + a.order - 1) / a.order) +
-               " layers");
+  mesh.band_layers = band.layers;
+  mesh.band_size = band.size;
   const double H = shape.height(), w = mesh.band_layers * mesh.band_size;
   const auto& f = a.geometry.foundation;
   const double room =
@@ -262,24 +245,9 @@ void read_transmitting(const input::Case& c, ArchDamConfig& a,
         << " m, or larger foundation.extent_* (multiples of the height)";
     c.fail("foundation.band_size", problem.str(), fix.str());
   }
-  if (a.seismic.scheme.alpha != 0.0)
-    c.fail("time.hht_alpha",
-           "must be 0 with a multi-transmitting boundary (the implicit-"
-           "explicit partition is Newmark's average acceleration)",
-           "time.hht_alpha = 0");
   const boundary::Rock rock{a.rock.E, a.rock.nu, c.real("rock.rho"), false};
-  const double courant = rock.cp() * a.seismic.scheme.dt / t.spacing;
-  if (courant > 1.0)
-  {
-    std::ostringstream problem, fix;
-    problem << "is too large for the multi-transmitting boundary: s = c_p dt "
-               "/ dx = "
-            << courant << " (c_p " << rock.cp() << " m/s, dx " << t.spacing
-            << " m) must be at most 1";
-    fix << "time.dt at most " << t.spacing / rock.cp()
-        << " s, or a larger foundation.band_size";
-    c.fail("time.dt", problem.str(), fix.str());
-  }
+  check_transmitting_step(c, a.seismic.scheme.alpha, rock, a.seismic.scheme.dt,
+                          t.spacing);
   if (c.boolean("study.foundation"))
     c.fail("foundation.boundary",
            "mtf is not yet available in study.foundation (its ratios change "

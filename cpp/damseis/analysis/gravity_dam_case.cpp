@@ -1,4 +1,5 @@
 #include "gravity_dam_case.h"
+#include "transmitting_keys.h"
 #include <damseis/geometry/mesh_estimate.h>
 #include <damseis/geometry/tags.h>
 #include <damseis/results/singular_points.h>
@@ -69,27 +70,7 @@ input::Schema gravity_dam_schema()
            "structured band of explicit elements (foundation.band_*, "
            "foundation.mtf_*)",
            {"fixed", "viscous_spring", "mtf"});
-  s.integer("foundation.mtf_order", "2", "-",
-            "order N of the multi-transmitting formula (2 needs mesh.order "
-            "= 1)")
-      .between(1, 2);
-  s.real("foundation.mtf_drift", "0.0001", "-",
-         "drift control gamma_d of the multi-transmitting formula (b = 1 / "
-         "(1 + gamma_d)): the boundary is fixed at zero frequency and "
-         "reflects the frequencies with omega dt of the order of gamma_d")
-      .at_least(0)
-      .at_most(0.1);
-  s.integer("foundation.band_layers", "4", "-",
-            "layers of square cells in the structured band along the "
-            "block's sides and bottom (boundary = mtf; at least N nodes "
-            "inward of the boundary: 2N cells for P1, N for P2)")
-      .between(1, 20);
-  s.real("foundation.band_size", "10.0", "m",
-         "cell size of the structured band (boundary = mtf); its node "
-         "spacing (size / order) is the formula's dx and sets the explicit "
-         "band's stable time step")
-      .above(0)
-      .at_most(1000);
+  add_transmitting_keys(s, "sides and bottom", "10.0");
   s.real("foundation.rho", "2640", "kg/m3",
          "mass density of the rock (with boundary = viscous_spring; the "
          "fixed block is massless)")
@@ -186,30 +167,17 @@ namespace
 void read_transmitting(const input::Case& c, GravityDamConfig& g)
 {
   auto& s = g.section;
-  Transmitting& t = g.transmitting;
-  t.order = static_cast<int>(c.integer("foundation.mtf_order"));
-  t.drift = c.real("foundation.mtf_drift");
-  t.band_region = tags::foundation_band;
-  if (g.boundary != FoundationBoundary::transmitting)
+  const bool active = g.boundary == FoundationBoundary::transmitting;
+  BandKeys band;
+  g.transmitting = read_transmitting_keys(c, g.order, active, band);
+  if (!active)
     return;
+  s.band_layers = band.layers;
+  s.band_size = band.size;
   if (s.foundation_split != geometry::GravityDamSection::Split::none)
     c.fail("foundation.boundary",
            "mtf is not yet available with a split foundation block",
            "foundation.split = \"none\" or boundary = \"viscous_spring\"");
-  if (g.order == 2 && t.order == 2)
-    c.fail("foundation.mtf_order",
-           "2 drifts away on P2 elements (the band's lumped lattice "
-           "alternates vertex and midside masses; tests/fem/"
-           "test_mtf_boundary.cpp)",
-           "mesh.order = 1, or foundation.mtf_order = 1");
-  s.band_layers = static_cast<int>(c.integer("foundation.band_layers"));
-  s.band_size = c.real("foundation.band_size");
-  t.spacing = s.band_size / g.order;
-  if (s.band_layers * g.order < t.order)
-    c.fail("foundation.band_layers",
-           "is too few for the formula's stencil (N node spacings inward)",
-           "at least " + std::to_string((t.order + g.order - 1) / g.order) +
-               " layers");
   const double w = s.band_layers * s.band_size;
   if (!(w < s.foundation_depth &&
         w < 0.5 * (s.foundation_width - (s.toe_x - s.heel_x))))
@@ -219,34 +187,18 @@ void read_transmitting(const input::Case& c, GravityDamConfig& g)
            "a band thinner than the block beside and below the dam");
 }
 
-/// The time step against the multi-transmitting formula's s = c_p dt / dx
-/// <= 1 (c_p of the stiffest rock the case runs).
+/// The time step against the multi-transmitting formula (c_p of the
+/// stiffest rock the case runs).
 void check_transmitting_step(const input::Case& c, const GravityDamConfig& g,
                              double largest_E)
 {
   if (g.boundary != FoundationBoundary::transmitting)
     return;
-  if (g.seismic.scheme.alpha != 0.0)
-    c.fail("time.hht_alpha",
-           "must be 0 with a multi-transmitting boundary (the implicit-"
-           "explicit partition is Newmark's average acceleration)",
-           "time.hht_alpha = 0");
   const boundary::Rock rock{largest_E, g.rock.nu, g.rock_rho,
                             g.plane == fem::PlaneMode::plane_stress};
-  const double dt = g.seismic.scheme.dt, dx = g.transmitting.spacing;
-  const double courant = rock.cp() * dt / dx;
-  if (courant > 1.0)
-  {
-    std::ostringstream problem, fix;
-    problem << "is too large for the multi-transmitting boundary: s = c_p dt "
-               "/ dx = "
-            << courant << " (c_p " << rock.cp() << " m/s, dx " << dx
-            << " m) must be at most 1";
-    fix << "time.dt at most " << dx / rock.cp()
-        << " s (the explicit band's stable step is smaller still: the run "
-           "states it), or a larger foundation.band_size";
-    c.fail("time.dt", problem.str(), fix.str());
-  }
+  analysis::check_transmitting_step(c, g.seismic.scheme.alpha, rock,
+                                    g.seismic.scheme.dt,
+                                    g.transmitting.spacing);
 }
 
 /// The foundation block's keys: size, mesh, rock, split (the boundary

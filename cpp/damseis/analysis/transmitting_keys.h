@@ -1,0 +1,42 @@
+// The case keys of Liao's multi-transmitting boundary (foundation.mtf_*,
+// foundation.band_*), shared by the demos' case readers: their
+// declarations, their reading with the checks that need the keys alone,
+// and the checks of the time step against the boundary.
+#pragma once
+
+#include "wave_foundation.h"
+#include <damseis/boundary/viscous_spring.h>
+#include <damseis/input/case.h>
+#include <string>
+
+namespace damseis::analysis
+{
+/// Declares foundation.mtf_order, foundation.mtf_drift,
+/// foundation.band_layers and foundation.band_size. `where`: the faces the
+/// band runs along; `band_size`: the default cell size [m].
+void add_transmitting_keys(input::Schema& s, const std::string& where,
+                           const std::string& band_size);
+
+/// The structured band a case asks for.
+struct BandKeys
+{
+  int layers = 0;
+  double size = 0.0; ///< cell size [m]
+};
+
+/// Reads the formula (order, drift; its node spacing is band_size /
+/// mesh_order) and the band. With `active` (foundation.boundary = "mtf")
+/// it fails (exit 2) on a band thinner than the stencil (2N node spacings
+/// inward of the boundary) and on order 2 with P2 elements (the band's
+/// lumped lattice alternates vertex and midside masses and the boundary
+/// drifts away; tests/fem/test_mtf_boundary.cpp).
+Transmitting read_transmitting_keys(const input::Case& c, int mesh_order,
+                                    bool active, BandKeys& band);
+
+/// The time step of a run on the boundary: time.hht_alpha = 0 (the
+/// implicit-explicit partition is Newmark's average acceleration) and
+/// s = c_p dt / dx <= 1, c_p of `rock`.
+void check_transmitting_step(const input::Case& c, double hht_alpha,
+                             const boundary::Rock& rock, double dt,
+                             double spacing);
+} // namespace damseis::analysis
