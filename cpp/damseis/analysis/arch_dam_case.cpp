@@ -245,7 +245,7 @@ void read_transmitting(const input::Case& c, ArchDamConfig& a,
         << " m, or larger foundation.extent_* (multiples of the height)";
     c.fail("foundation.band_size", problem.str(), fix.str());
   }
-  const boundary::Rock rock{a.rock.E, a.rock.nu, c.real("rock.rho"), false};
+  const boundary::Rock rock{a.rock.E, a.rock.nu, a.rock_rho, false};
   check_transmitting_step(c, a.seismic.scheme.alpha, rock, a.seismic.scheme.dt,
                           t.spacing);
   if (c.boolean("study.foundation"))

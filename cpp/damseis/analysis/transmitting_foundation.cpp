@@ -29,15 +29,9 @@ public:
   {
     MatCreateVecs(P, &_reduced, &_full);
     VecDuplicate(_full, &_full_prev);
-    const std::vector<PetscInt>& rows = _inner->rows();
-    _inner_values.resize(rows.size());
-    std::vector<PetscScalar> ones(rows.size(), 1.0);
-    VecSet(_full, 0.0);
-    VecSetValues(_full, static_cast<PetscInt>(rows.size()), rows.data(),
-                 ones.data(), INSERT_VALUES);
-    VecAssemblyBegin(_full);
-    VecAssemblyEnd(_full);
-    MatMultTranspose(P, _full, _reduced);
+    // The number of prescribed dofs each tied unknown takes.
+    _inner_values.assign(_inner->rows().size(), 1.0);
+    to_reduced(_inner_values);
     PetscInt r0 = 0, r1 = 0;
     VecGetOwnershipRange(_reduced, &r0, &r1);
     const double* r = nullptr;
@@ -65,19 +59,25 @@ public:
     MatMult(_P, u_n, _full);
     MatMult(_P, u_prev, _full_prev);
     _inner->values(n_next, _full, _full_prev, _inner_values);
-    // The values on the full layout, then onto the tied unknowns.
-    const std::vector<PetscInt>& rows = _inner->rows();
-    VecSet(_full, 0.0);
-    VecSetValues(_full, static_cast<PetscInt>(rows.size()), rows.data(),
-                 _inner_values.data(), INSERT_VALUES);
-    VecAssemblyBegin(_full);
-    VecAssemblyEnd(_full);
-    MatMultTranspose(_P, _full, _reduced);
+    to_reduced(_inner_values);
     VecGetValues(_reduced, static_cast<PetscInt>(_rows.size()), _rows.data(),
                  out.data());
   }
 
 private:
+  /// _reduced = P^T x, x the values on the inner rows (full layout), zero
+  /// elsewhere.
+  void to_reduced(const std::vector<double>& values)
+  {
+    const std::vector<PetscInt>& rows = _inner->rows();
+    VecSet(_full, 0.0);
+    VecSetValues(_full, static_cast<PetscInt>(rows.size()), rows.data(),
+                 values.data(), INSERT_VALUES);
+    VecAssemblyBegin(_full);
+    VecAssemblyEnd(_full);
+    MatMultTranspose(_P, _full, _reduced);
+  }
+
   std::shared_ptr<dynamics::PrescribedDisplacement> _inner;
   Mat _P;
   Vec _reduced = nullptr, _full = nullptr, _full_prev = nullptr;

@@ -253,19 +253,12 @@ MeshArrays build_on_root(const ArchDamGeometry& g, bool verbose)
   occ::fragment(rock, dam, out, map);
   occ::synchronize();
   stage("dam-foundation fragment (OCC) done");
+  // The rock: the core first, then the band's pieces (split_band).
   std::vector<int> rock_vols, band_vols, dam_vols;
   const std::size_t n_rock = rock.size();
   for (std::size_t i = 0; i < n_rock; ++i)
     for (const auto& dt : map[i])
-    {
-      double cx, cy, cz;
-      occ::getCenterOfMass(3, dt.second, cx, cy, cz);
-      const bool in_band =
-          mo.band_layers > 0 &&
-          (cx < e.x0 + band_w || cx > e.x1 - band_w || cy < e.y0 + band_w ||
-           cy > e.y1 - band_w || cz < e.z0 + band_w);
-      (in_band ? band_vols : rock_vols).push_back(dt.second);
-    }
+      (i == 0 ? rock_vols : band_vols).push_back(dt.second);
   for (std::size_t i = n_rock; i < map.size(); ++i)
     for (const auto& dt : map[i])
       dam_vols.push_back(dt.second);
@@ -309,7 +302,7 @@ MeshArrays build_on_root(const ArchDamGeometry& g, bool verbose)
         throw std::runtime_error("arch dam: an internal dam surface is on "
                                  "no joint plane");
     }
-    else if (up.size() == 2 and ndam == 1)
+    else if (up.size() == 2 && ndam == 1)
       tag = tags::dam_base;
     else if (up.size() == 2)
       continue; // between the band's pieces and the core: interior
