@@ -9,6 +9,7 @@
 #include <dolfinx/mesh/Mesh.h>
 #include <dolfinx/mesh/utils.h>
 #include <map>
+#include <numeric>
 #include <sstream>
 #include <stdexcept>
 
@@ -95,9 +96,34 @@ void throw_if_any(MPI_Comm comm, const std::string& message)
       geometry::broadcast_from_root(comm, message, first));
 }
 
+/// The global block of each local (owned and ghost) block of V.
+std::vector<std::int64_t> global_blocks(const dolfinx::fem::FunctionSpace& V)
+{
+  const auto& map = *V.dofmap()->index_map;
+  const std::int32_t n = map.size_local() + map.num_ghosts();
+  std::vector<std::int32_t> local(n);
+  std::iota(local.begin(), local.end(), 0);
+  std::vector<std::int64_t> global(n);
+  map.local_to_global(local, global);
+  return global;
+}
+
+/// Whether boundary node a takes precedence over b at a node on facets of
+/// both: the bottom's (corners belong to the bottom), else the smaller
+/// normal in lexicographic order (a vertical edge's node marches along
+/// one side's normal), an order that does not depend on the partition.
+bool precedes(const MtfBoundary::Node& a, const MtfBoundary::Node& b)
+{
+  if (a.bottom != b.bottom)
+    return a.bottom;
+  return a.normal < b.normal;
+}
+
 /// The owned nodes of V on the facets tagged `tags`, with the outward
 /// normal of one of their facets, or straight down where one of them is a
-/// bottom facet (corners belong to the bottom).
+/// bottom facet. A node's facets may all lie on other ranks: every rank
+/// sends the nodes of its facets (owned and ghost) to all, and each keeps
+/// its own (collective).
 std::map<std::int32_t, MtfBoundary::Node>
 boundary_nodes(const dolfinx::fem::FunctionSpace& V,
                const dolfinx::mesh::MeshTags<std::int32_t>& facets,
@@ -107,6 +133,7 @@ boundary_nodes(const dolfinx::fem::FunctionSpace& V,
   const auto& dofmap = *V.dofmap();
   const std::int32_t owned = dofmap.index_map->size_local();
   const std::vector<double> x = V.tabulate_dof_coordinates(false);
+  const std::vector<std::int64_t> global = global_blocks(V);
   const int tdim = mesh.topology().dim(), fdim = tdim - 1;
   auto& topology = mesh.topology_mutable();
   topology.create_connectivity(fdim, tdim);
@@ -114,7 +141,9 @@ boundary_nodes(const dolfinx::fem::FunctionSpace& V,
   auto f_to_c = topology.connectivity(fdim, tdim);
   auto c_to_f = topology.connectivity(tdim, fdim);
   const auto& layout = dofmap.element_dof_layout();
-  std::map<std::int32_t, MtfBoundary::Node> nodes;
+  // This rank's facets' nodes: global block, normal, bottom (0 / 1).
+  std::vector<std::int64_t> blocks;
+  std::vector<double> data; // normal (3), bottom
   for (std::size_t i = 0; i < facets.indices().size(); ++i)
   {
     if (std::find(tags.begin(), tags.end(), facets.values()[i]) == tags.end())
@@ -134,15 +163,28 @@ boundary_nodes(const dolfinx::fem::FunctionSpace& V,
     auto cell_dofs = dofmap.cell_dofs(c);
     for (int ld : layout.entity_closure_dofs(fdim, local))
     {
-      const std::int32_t b = cell_dofs[ld];
-      if (b >= owned)
-        continue;
-      const MtfBoundary::Node node{
-          {x[3 * b], x[3 * b + 1], x[3 * b + 2]}, n, bottom};
-      auto [it, inserted] = nodes.try_emplace(b, node);
-      if (!inserted && bottom && !it->second.bottom)
-        it->second = node;
+      blocks.push_back(global[cell_dofs[ld]]);
+      data.insert(data.end(), {n[0], n[1], n[2], bottom ? 1.0 : 0.0});
     }
+  }
+  const MPI_Comm comm = mesh.comm();
+  blocks = linalg::all_gather(comm, blocks);
+  data = linalg::all_gather(comm, data);
+  // The owned ones, each with the normal that takes precedence.
+  const std::int64_t first = dofmap.index_map->local_range()[0];
+  std::map<std::int32_t, MtfBoundary::Node> nodes;
+  for (std::size_t i = 0; i < blocks.size(); ++i)
+  {
+    if (blocks[i] < first || blocks[i] >= first + owned)
+      continue;
+    const auto b = static_cast<std::int32_t>(blocks[i] - first);
+    const MtfBoundary::Node node{
+        {x[3 * b], x[3 * b + 1], x[3 * b + 2]},
+        {data[4 * i], data[4 * i + 1], data[4 * i + 2]},
+        data[4 * i + 3] > 0.5};
+    auto [it, inserted] = nodes.try_emplace(b, node);
+    if (!inserted && precedes(node, it->second))
+      it->second = node;
   }
   return nodes;
 }
@@ -155,27 +197,31 @@ struct BandNodes
             const std::vector<std::int32_t>& cells, double dx)
       : dx(dx)
   {
+    // The nodes of this rank's band cells (owned and ghost: a node's band
+    // cells may all lie on another rank than the node's owner), of every
+    // rank, each once.
     const auto& dofmap = *V.dofmap();
-    const std::int32_t owned = dofmap.index_map->size_local();
-    const std::int64_t first = dofmap.index_map->local_range()[0];
+    const auto& map = *dofmap.index_map;
     const std::vector<double> X = V.tabulate_dof_coordinates(false);
-    std::vector<std::int8_t> in_band(owned, 0);
+    const std::vector<std::int64_t> global = global_blocks(V);
+    std::vector<std::int8_t> in_band(map.size_local() + map.num_ghosts(), 0);
     for (std::int32_t c : cells)
       for (std::int32_t b : dofmap.cell_dofs(c))
-        if (b < owned)
-          in_band[b] = 1;
-    for (std::int32_t b = 0; b < owned; ++b)
+        in_band[b] = 1;
+    for (std::size_t b = 0; b < in_band.size(); ++b)
       if (in_band[b])
       {
-        blocks.push_back(first + b);
+        blocks.push_back(global[b]);
         x.insert(x.end(), X.begin() + 3 * b, X.begin() + 3 * b + 3);
       }
     const MPI_Comm comm = V.mesh()->comm();
     blocks = linalg::all_gather(comm, blocks);
     x = linalg::all_gather(comm, x);
+    std::map<std::int64_t, std::int32_t> unique;
     for (std::size_t i = 0; i < blocks.size(); ++i)
-      grid[key({x[3 * i], x[3 * i + 1], x[3 * i + 2]})].push_back(
-          static_cast<std::int32_t>(i));
+      if (unique.try_emplace(blocks[i], static_cast<std::int32_t>(i)).second)
+        grid[key({x[3 * i], x[3 * i + 1], x[3 * i + 2]})].push_back(
+            static_cast<std::int32_t>(i));
   }
   /// The index of the node at p (within 1e-6 dx), or -1.
   std::int32_t find(const Point& p) const

@@ -11,9 +11,11 @@
 // separation): at the bottom the incident wave alone
 // (the down-going reflection must leave through it), on the sides the free
 // field. Nodes on the bottom and a side (corners) belong to the bottom; a
-// node on two sides (3D vertical edges) marches along the first side's
-// normal. Order 1 or 2 (the history is the last two states). The stencils
-// may cross partitions: their values are gathered with a PETSc scatter.
+// node on two sides (3D vertical edges) marches along the side's normal
+// that comes first in lexicographic order. Order 1 or 2 (the history is
+// the last two states). A node's boundary facets and band cells may lie
+// on other ranks than the node's owner: the set-up sees every rank's; the
+// stencils' values are gathered with a PETSc scatter.
 #pragma once
 
 #include <algorithm>
