@@ -89,6 +89,7 @@ expect mtf_band_too_thick 'koyna\.toml.*foundation\.band_size' "${mtf[@]}" --set
 # The stencil reads 2N = 4 node spacings inward: 3 layers of P1 are too few
 # (checked before the mesh is built; the formula's own check came only after).
 expect mtf_band_too_thin 'koyna\.toml.*foundation\.band_layers.*2N = 4.*at least 4 layers' "${mtf[@]}" --set mesh.order=1 --set foundation.band_layers=3 --set time.dt=0.001
+expect mtf_band_damping_out_of_range 'koyna\.toml.*foundation\.band_damping' "${mtf[@]}" --set mesh.order=1 --set foundation.band_damping=0.8
 expect rock_density_implausible 'koyna\.toml.*foundation\.rho' --set foundation.enabled=true --set foundation.boundary=viscous_spring --set foundation.rho=0
 
 if [ "$failures" -ne 0 ]; then

@@ -177,6 +177,9 @@ TEST(GravityDamAnalysis,
   const auto a = run(with("linear"), dir / "linear");
   const auto b = run(with("elastic"), dir / "elastic");
   ASSERT_TRUE(b["foundation"].contains("mtf"));
+  // The band's own stiffness damping (foundation.band_damping) is on.
+  EXPECT_GT(b["foundation"]["mtf"]["band_stiffness_damping_s"].get<double>(),
+            0.0);
   const auto ha = crest_totals(dir / "linear" / "crest.csv", true);
   const auto hb = crest_totals(dir / "elastic" / "crest.csv", true);
   ASSERT_EQ(ha.size(), hb.size());

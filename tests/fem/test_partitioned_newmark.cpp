@@ -89,10 +89,11 @@ void make_bar(Bar& bar, int elements, int implicit)
 /// oscillates (by up to 1 / (1 - (omega dt / 2)^2) in the highest modes);
 /// a stable run does not grow.
 double energy_growth(const Bar& bar, double dt, int steps,
-                     RayleighDamping damping = {})
+                     RayleighDamping damping = {}, double b_explicit = 0.0)
 {
   PartitionedNewmark newmark(bar.M, bar.K, bar.K_implicit, damping, dt,
-                             damseis::linalg::Factorization::petsc);
+                             damseis::linalg::Factorization::petsc, nullptr,
+                             b_explicit);
   Vec u, zero;
   MatCreateVecs(bar.K, &u, nullptr);
   VecDuplicate(u, &zero);
@@ -176,6 +177,39 @@ TEST(PartitionedNewmark, BarIsStableBelowCourantOneAndUnstableAbove)
     EXPECT_LT(energy_growth(bar, dt, 20000), 1.01) << "dt = " << dt;
   // Above it the energy grows without bound.
   EXPECT_GT(energy_growth(bar, 1.05, 20000), 1e6);
+}
+
+TEST(PartitionedNewmark, ExplicitStiffnessDampingLowersTheStableStep)
+{
+  // The explicit elements' own damping b_E K_E on the predicted velocity:
+  // central differences with stiffness damping xi at omega_max are stable
+  // for omega_max dt <= 2 (sqrt(1 + xi^2) - xi) (Belytschko, Liu & Moran,
+  // Nonlinear Finite Elements, 2000, eq. 6.3.21). The bar's explicit
+  // group, xi = 0.3 at its highest frequency: stable at 0.98 of that step,
+  // unstable at 1.05 of it (which is stable without the damping: its
+  // undamped limit is 1.35 times higher).
+  Bar bar;
+  make_bar(bar, 40, 20);
+  Vec lumped; // the explicit elements' lumped mass
+  MatCreateVecs(bar.K, &lumped, nullptr);
+  VecSet(lumped, 0.0);
+  for (int e = 20; e < 40; ++e)
+  {
+    VecSetValue(lumped, e, 0.5, ADD_VALUES);
+    VecSetValue(lumped, e + 1, 0.5, ADD_VALUES);
+  }
+  VecAssemblyBegin(lumped);
+  VecAssemblyEnd(lumped);
+  const double w = damseis::dynamics::highest_explicit_frequency(
+      bar.K, bar.K_implicit, lumped, {});
+  VecDestroy(&lumped);
+  const double xi = 0.3, b_e = 2 * xi / w;
+  const double limit = 2 * (std::sqrt(1 + xi * xi) - xi) / w;
+  EXPECT_NEAR(damseis::dynamics::explicit_stable_step(w, {0.0, b_e}), limit,
+              1e-6 * limit);
+  EXPECT_LT(energy_growth(bar, 0.98 * limit, 20000, {}, b_e), 1.01);
+  EXPECT_GT(energy_growth(bar, 1.05 * limit, 20000, {}, b_e), 1e6);
+  EXPECT_LT(energy_growth(bar, 1.05 * limit, 20000), 1.1); // 1.0103
 }
 
 TEST(PartitionedNewmark, HighestExplicitFrequencyOfTheBar)
@@ -298,7 +332,8 @@ private:
 TEST(PartitionedNewmark, NonlinearIntegratorsPartitionIsTheSame)
 {
   // 10 implicit + 10 explicit elements, Rayleigh damping (its stiffness
-  // part on the implicit elements), a load at mid-length and the free end
+  // part on the implicit elements) and the explicit elements' own
+  // stiffness damping, a load at mid-length and the free end
   // prescribed: NonlinearNewmark with the partition (Newton on u, the
   // explicit force at the predictor) against PartitionedNewmark.
   Bar bar;
@@ -310,13 +345,15 @@ TEST(PartitionedNewmark, NonlinearIntegratorsPartitionIsTheSame)
   MatAXPY(K_E, -1.0, bar.K_implicit, DIFFERENT_NONZERO_PATTERN);
   const PetscInt end = bar.n - 1;
   auto motion = std::make_shared<EndMotion>(end, dt);
+  // The explicit elements damped too: 5 % at the highest frequency (2).
+  const double b_e = 0.05;
   PartitionedNewmark p(bar.M, bar.K, bar.K_implicit, damping, dt,
-                       damseis::linalg::Factorization::petsc, motion);
+                       damseis::linalg::Factorization::petsc, motion, b_e);
   LinearBar system(bar.K);
   damseis::dynamics::NonlinearNewmark n(bar.M, bar.K, damping, {dt, 0.0},
                                         system, {},
                                         damseis::linalg::Factorization::petsc);
-  n.set_partition({bar.K_implicit, K_E, motion});
+  n.set_partition({bar.K_implicit, K_E, motion, b_e});
   Vec zero, f;
   MatCreateVecs(bar.K, &zero, nullptr);
   VecDuplicate(zero, &f);

@@ -163,6 +163,11 @@ void FreeFieldLoad::assemble(int k, Vec f) const
     MatMult(_K, v_ref, _work.vec());
     VecAXPY(f, _damping.b_stiffness, _work.vec());
   }
+  if (_K_extra && _b_extra != 0.0)
+  {
+    MatMult(_K_extra, v_ref, _work.vec());
+    VecAXPY(f, _b_extra, _work.vec());
+  }
   _seconds +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();

@@ -5,6 +5,7 @@
 // (algorithms.md 3.6),
 //   f(t) = F + K_b u_ff + C_b v_ff + T sigma_ff        (boundary)
 //            + (a_M M + b_K K) v_ff                     (all nodes),
+// (with a transmitting boundary's band, + b_E K_E v_ff as well),
 // the last term so that the Rayleigh damping acts on the motion relative to
 // the free field (the scattered field), not on the incident wave, which
 // would otherwise be damped on its way up: C (v - v_ff). On a rigid
@@ -41,6 +42,15 @@ public:
                 std::shared_ptr<const boundary::FreeField> field, Mat M, Mat K,
                 dynamics::RayleighDamping damping, double dt, Mat tie = nullptr,
                 Vec sustained = nullptr);
+  /// A further stiffness-proportional damping b K_extra in C (the
+  /// explicit band's own, dynamics::PartitionedNewmark): its force on
+  /// the free field's velocity joins the load. K_extra must outlive the
+  /// load.
+  void add_stiffness_damping(Mat K_extra, double b)
+  {
+    _K_extra = K_extra;
+    _b_extra = b;
+  }
   void assemble(int k, Vec f) const override;
   /// Zero: the free field starts at rest.
   void initial_acceleration(Vec a) const override;
@@ -50,8 +60,9 @@ public:
 
 private:
   std::shared_ptr<const boundary::FreeField> _field;
-  Mat _M, _K, _tie;
+  Mat _M, _K, _tie, _K_extra = nullptr;
   dynamics::RayleighDamping _damping;
+  double _b_extra = 0.0;
   double _dt;
   int _dim;
   mutable double _seconds = 0.0;

@@ -126,23 +126,33 @@ TransmittingFoundation::TransmittingFoundation(
   }
   _omega = dynamics::highest_explicit_frequency(
       _K.mat(), _K_implicit.mat(), _band_mass.vec(), _prescribed->rows());
+  // The band's own stiffness damping: band_damping of critical at its
+  // highest frequency.
+  _b_explicit = _omega > 0.0 ? 2.0 * t.band_damping / _omega : 0.0;
+  {
+    Mat K_E = linalg::duplicate_matrix(_K.mat(), MAT_COPY_VALUES);
+    MatAXPY(K_E, -1.0, _K_implicit.mat(), SUBSET_NONZERO_PATTERN);
+    _K_explicit = Matrix(K_E, false);
+  }
   const auto nodes = _mtf->node_counts();
   std::ostringstream line;
   line << "foundation with mass, multi-transmitting boundary (order " << t.order
        << ", drift " << t.drift << ", s = c_p dt / dx = " << m.courant() << ", "
        << nodes[0] << " nodes, " << nodes[1]
        << " on the bottom), the band explicit (highest frequency "
-       << _omega / (2.0 * std::numbers::pi)
-       << " Hz), vertically incident waves: the surface moves with the "
+       << _omega / (2.0 * std::numbers::pi) << " Hz, damped "
+       << 100.0 * t.band_damping << "% there: b_E = " << _b_explicit
+       << " s), vertically incident waves: the surface moves with the "
           "record "
        << _field->surface_delay() << " s late";
   results::print(fe.mesh()->comm(), line.str());
   if (fe.dim() == 3)
     results::warn(fe.mesh()->comm(),
                   "the multi-transmitting boundary in 3D is a first version, "
-                  "not for studies: order 2 has grown after 2-3 s at the top "
-                  "of the block's edges, order 1 is stable but its crest "
-                  "peak was 44% below the converged one "
+                  "not for studies: with the default drift control the "
+                  "block's corners drift away after a few seconds, with "
+                  "foundation.mtf_drift = 0.01 the crest history was 78% of "
+                  "its peak from the converged one "
                   "(docs/studies/section3_foundation.md)");
 }
 
@@ -195,8 +205,8 @@ void TransmittingFoundation::check_time_step(dynamics::RayleighDamping damping,
   // 2 % above the power iteration's estimate (it approaches the highest
   // frequency from below); the band takes the mass-proportional damping
   // alone, implicitly.
-  _stable_dt =
-      dynamics::explicit_stable_step(1.02 * _omega, {damping.a_mass, 0.0});
+  _stable_dt = dynamics::explicit_stable_step(1.02 * _omega,
+                                              {damping.a_mass, _b_explicit});
   std::ostringstream line;
   line << "explicit band: stable time step " << _stable_dt
        << " s (Hughes-Liu partition); time.dt = " << scheme.dt << " s";
@@ -226,28 +236,24 @@ TransmittingFoundation::stepper(dynamics::RayleighDamping damping,
   check_time_step(damping, scheme);
   return std::make_unique<engine::PartitionedStepper>(
       _M.mat(), _K.mat(), _K_implicit.mat(), damping, scheme.dt, factorization,
-      _prescribed);
+      _prescribed, _b_explicit);
 }
 
 dynamics::Partition TransmittingFoundation::partition(Vec u_static)
 {
-  if (!_K_explicit.mat())
-  {
-    Mat K_E = linalg::duplicate_matrix(_K.mat(), MAT_COPY_VALUES);
-    MatAXPY(K_E, -1.0, _K_implicit.mat(), SUBSET_NONZERO_PATTERN);
-    _K_explicit = Matrix(K_E, false);
-  }
   return {_K_implicit.mat(), _K_explicit.mat(),
-          std::make_shared<FromStatic>(_prescribed, u_static)};
+          std::make_shared<FromStatic>(_prescribed, u_static), _b_explicit};
 }
 
 std::unique_ptr<engine::DynamicLoad>
 TransmittingFoundation::load(dynamics::RayleighDamping damping, double dt,
                              Vec sustained) const
 {
-  return std::make_unique<FreeFieldLoad>(_fe, nullptr, _ground, _field,
-                                         _M.mat(), _K_implicit.mat(), damping,
-                                         dt, _tie, sustained);
+  auto load = std::make_unique<FreeFieldLoad>(_fe, nullptr, _ground, _field,
+                                              _M.mat(), _K_implicit.mat(),
+                                              damping, dt, _tie, sustained);
+  load->add_stiffness_damping(_K_explicit.mat(), _b_explicit);
+  return load;
 }
 
 nlohmann::json TransmittingFoundation::summary() const
@@ -255,6 +261,8 @@ nlohmann::json TransmittingFoundation::summary() const
   const auto nodes = _mtf->node_counts();
   return {{"order", _wave.mtf->order},
           {"drift", _wave.mtf->drift},
+          {"band_damping", _wave.mtf->band_damping},
+          {"band_stiffness_damping_s", _b_explicit},
           {"spacing_m", _wave.mtf->spacing},
           {"artificial_speeds_m_s", {_wave.rock.cp(), _wave.rock.cs()}},
           {"courant_s", _mtf->settings().courant()},

@@ -52,9 +52,9 @@ public:
   /// The mass of the partition: consistent on the implicit elements,
   /// lumped on the band.
   Mat mass() const { return _M.mat(); }
-  /// The load: C v_ff at every node, C = a_M M + b_K K_I (the prescribed
-  /// nodes carry the rest of the free field), plus `sustained` (the static
-  /// loads of a total-state run; null: none).
+  /// The load: C v_ff at every node, C = a_M M + b_K K_I + b_E K_E (the
+  /// prescribed nodes carry the rest of the free field), plus `sustained` (the
+  /// static loads of a total-state run; null: none).
   std::unique_ptr<engine::DynamicLoad> load(dynamics::RayleighDamping damping,
                                             double dt,
                                             Vec sustained = nullptr) const;
@@ -73,7 +73,8 @@ private:
   std::shared_ptr<fem::MtfBoundary> _mtf;
   /// The formula on the system's unknowns (_mtf itself without a tie).
   std::shared_ptr<dynamics::PrescribedDisplacement> _prescribed;
-  double _omega = 0.0;     ///< the band's highest circular frequency
-  double _stable_dt = 0.0; ///< set by stepper()
+  double _omega = 0.0;      ///< the band's highest circular frequency
+  double _b_explicit = 0.0; ///< the band's stiffness damping b_E [s]
+  double _stable_dt = 0.0;  ///< set by stepper()
 };
 } // namespace damseis::analysis

@@ -16,6 +16,12 @@ void add_transmitting_keys(input::Schema& s, const std::string& where,
          "(1 + gamma_d)): the boundary is fixed at zero frequency and "
          "reflects the frequencies with omega dt of the order of gamma_d")
       .between(0, 0.1);
+  s.real("foundation.band_damping", "0.05", "-",
+         "stiffness-proportional damping of the explicit band, as its ratio "
+         "of critical at the band's highest frequency: it damps the band's "
+         "shortest waves, with which the formula is unstable in 3D, and "
+         "lowers the stable step by sqrt(1 + r^2) - r")
+      .between(0, 0.5);
   s.integer("foundation.band_layers", "4", "-",
             "layers of cells in the structured band along the block's " +
                 where +
@@ -36,6 +42,7 @@ Transmitting read_transmitting_keys(const input::Case& c, int mesh_order,
   Transmitting t;
   t.order = static_cast<int>(c.integer("foundation.mtf_order"));
   t.drift = c.real("foundation.mtf_drift");
+  t.band_damping = c.real("foundation.band_damping");
   t.band_region = geometry::tags::foundation_band;
   band.layers = static_cast<int>(c.integer("foundation.band_layers"));
   band.size = c.real("foundation.band_size");

@@ -33,8 +33,11 @@ enum class FoundationBoundary
 /// bottom (the Hughes-Liu partition), the formula at the boundary's nodes.
 struct Transmitting
 {
-  int order = 2;        ///< N
-  double drift = 0.0;   ///< gamma_d
+  int order = 2;      ///< N
+  double drift = 0.0; ///< gamma_d
+  /// The band's stiffness-proportional damping, its ratio of critical at
+  /// the band's highest frequency (dynamics::PartitionedNewmark's b_E).
+  double band_damping = 0.0;
   double spacing = 0.0; ///< node spacing of the band along its normals [m]
   int band_region = 0;  ///< the band's cell tag
 };

@@ -598,6 +598,14 @@ bool NonlinearNewmark::solve_step(double dt, Vec f_next, int level,
     Vec x[3] = {_fint, f_next, _f};
     VecMAXPY(_g, 3, c, x);
   }
+  if (_partition.K_explicit && _partition.b_explicit > 0.0)
+  {
+    // The explicit elements' damping on the predicted velocity (alpha =
+    // 0): + b_E K_E v~, v~ = v + (1 - gamma) dt a.
+    VecWAXPY(_tmp, dt * (1.0 - gamma), _a, _v);
+    VecScale(_tmp, _partition.b_explicit);
+    MatMultAdd(_partition.K_explicit, _tmp, _g, _g);
+  }
   const double reference = std::max(norm(f_next), 1e-300);
 
   // R(u') = M (a' + w aM v') + (w bK K0 + w C_e) v' + w f_int(u') + g, with

@@ -169,6 +169,9 @@ struct Partition
   /// The explicit elements' stiffness, part of f_int (linear there).
   Mat K_explicit = nullptr;
   std::shared_ptr<PrescribedDisplacement> prescribed;
+  /// b_E [s]: the explicit elements' stiffness-proportional damping
+  /// b_E K_E v~ on the predicted velocity (PartitionedNewmark).
+  double b_explicit = 0.0;
 };
 
 class NonlinearNewmark

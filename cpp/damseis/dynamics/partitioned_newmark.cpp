@@ -138,12 +138,15 @@ double highest_explicit_frequency(Mat K, Mat K_implicit, Vec lumped,
 PartitionedNewmark::PartitionedNewmark(
     Mat M, Mat K, Mat K_implicit, RayleighDamping damping, double dt,
     linalg::Factorization factorization,
-    std::shared_ptr<PrescribedDisplacement> prescribed)
-    : _M(M), _K(K), _K_implicit(K_implicit), _damping(damping), _dt(dt),
-      _prescribed(std::move(prescribed))
+    std::shared_ptr<PrescribedDisplacement> prescribed, double b_explicit)
+    : _M(M), _K(K), _K_implicit(K_implicit), _damping(damping),
+      _b_explicit(b_explicit), _dt(dt), _prescribed(std::move(prescribed))
 {
   if (!(dt > 0.0 && std::isfinite(dt)))
     throw std::invalid_argument("time step must be positive");
+  if (!(b_explicit >= 0.0 && std::isfinite(b_explicit)))
+    throw std::invalid_argument("the explicit elements' stiffness damping "
+                                "must be at least 0");
   // A = (1 + gamma dt a_M) M + (gamma dt b_K + beta dt^2) K_I, the
   // prescribed rows identity.
   _A = linalg::duplicate_matrix(K_implicit, MAT_COPY_VALUES);
@@ -177,7 +180,7 @@ PartitionedNewmark::PartitionedNewmark(
   _solver->factorize(_A);
 
   for (Vec* x : {&_u, &_v, &_a, &_f, &_u_prev, &_d_p, &_v_p, &_rhs, &_Mv, &_Ku,
-                 &_Ma, &_Kv, &_w, &_cv, &_r, &_du, &_mask})
+                 &_Ma, &_Kv, &_Kev, &_w, &_cv, &_r, &_du, &_mask})
   {
     MatCreateVecs(K, x, nullptr);
     VecSet(*x, 0.0);
@@ -192,7 +195,7 @@ PartitionedNewmark::PartitionedNewmark(
 PartitionedNewmark::~PartitionedNewmark()
 {
   for (Vec* x : {&_u, &_v, &_a, &_f, &_u_prev, &_d_p, &_v_p, &_rhs, &_Mv, &_Ku,
-                 &_Ma, &_Kv, &_w, &_cv, &_r, &_du, &_mask})
+                 &_Ma, &_Kv, &_Kev, &_w, &_cv, &_r, &_du, &_mask})
     VecDestroy(x);
   MatDestroy(&_A);
 }
@@ -208,6 +211,11 @@ void PartitionedNewmark::set_state(Vec u, Vec v, Vec a, Vec f, Vec u_prev,
   _n = n;
   MatMult(_M, _v, _Mv);
   MatMult(_K_implicit, _v, _Kv);
+  if (_b_explicit > 0.0)
+  {
+    MatMult(_K, _v, _Kev);
+    VecAXPY(_Kev, -1.0, _Kv);
+  }
   MatMult(_K, _u, _Ku);
   MatMult(_M, _a, _Ma);
   update_images();
@@ -224,6 +232,7 @@ void PartitionedNewmark::update_images()
 {
   // C v and the prescribed rows' reaction r = M a + C v + K u - f.
   VecAXPBYPCZ(_cv, _damping.a_mass, _damping.b_stiffness, 0.0, _Mv, _Kv);
+  VecAXPY(_cv, _b_explicit, _Kev);
   VecWAXPY(_r, 1.0, _Ma, _cv);
   VecAXPBYPCZ(_r, 1.0, -1.0, 1.0, _Ku, _f);
   VecPointwiseMult(_r, _r, _mask);
@@ -251,13 +260,19 @@ void PartitionedNewmark::step(Vec f_next)
   VecCopy(_u, _u_prev);
   VecCopy(_u, _du); // the step's start, for the energy balance
 
-  // rhs = f' - a_M M v~ - b_K K_I v~ - K d~ (M v~, K_I v~, K d~ kept: the
-  // new images follow from them).
+  // rhs = f' - a_M M v~ - b_K K_I v~ - b_E K_E v~ - K d~ (M v~, K_I v~,
+  // K_E v~, K d~ kept: the new images follow from them).
   MatMult(_M, _v_p, _Mv);
   MatMult(_K_implicit, _v_p, _Kv);
   MatMult(_K, _d_p, _Ku);
   VecWAXPY(_rhs, -_damping.a_mass, _Mv, f_next);
   VecAXPBYPCZ(_rhs, -_damping.b_stiffness, -1.0, 1.0, _Kv, _Ku);
+  if (_b_explicit > 0.0)
+  {
+    MatMult(_K, _v_p, _Kev);
+    VecAXPY(_Kev, -1.0, _Kv);
+    VecAXPY(_rhs, -_b_explicit, _Kev);
+  }
   if (_prescribed)
   {
     const std::vector<PetscInt>& rows = _prescribed->rows();
@@ -280,9 +295,13 @@ void PartitionedNewmark::step(Vec f_next)
   MatMult(_M, _a, _Ma);
   MatMult(_K, _a, _w);
   VecAXPY(_Ku, bdt2, _w);
+  if (_b_explicit > 0.0)
+    VecAXPY(_Kev, gdt, _w);
   MatMult(_K_implicit, _a, _w);
   VecAXPY(_Mv, gdt, _Ma);
   VecAXPY(_Kv, gdt, _w);
+  if (_b_explicit > 0.0)
+    VecAXPY(_Kev, -gdt, _w);
   ++_n;
 
   // The energy balance: du times the mean load, damping force and

@@ -6,19 +6,25 @@
 // the implicit group I (the dam and the interior) the new state:
 //   (M + gamma dt C + beta dt^2 K_I) a_{n+1} = f_{n+1} - C v~ - K d~,
 //   d_{n+1} = d~ + beta dt^2 a_{n+1},  v_{n+1} = v~ + gamma dt a_{n+1},
-// K_I the stiffness of the I elements alone, K that of all. The Rayleigh
-// damping is C = a_M M + b_K K_I: its mass-proportional part on all
-// elements (diagonal on E, so implicit there too), its stiffness-
-// proportional part on the I elements only. (Explicit on E it would cut
+// K_I the stiffness of the I elements alone, K that of all. The damping
+// is C = a_M M + b_K K_I + b_E K_E: the Rayleigh mass-proportional part on
+// all elements (diagonal on E, so implicit there too), its stiffness-
+// proportional part on the I elements only (explicit on E it would cut
 // the stable step by sqrt(1 + xi^2) - xi, xi = b_K omega_max / 2: about 5x
 // for 5 % damping of a dam's first modes and a band of 10 m; the band's
-// waves leave through the boundary anyway.) The rows of nodes touched by
+// waves leave through the boundary anyway), and the E elements' own
+// stiffness-proportional damping b_E K_E on v~ (explicit), a few percent
+// of critical at the band's highest frequency: it damps the band's
+// shortest waves, with which Liao's formula is unstable in 3D
+// (tests/fem/test_mtf_box.cpp), and leaves the seismic band alone. The
+// rows of nodes touched by
 // E elements alone are diagonal: explicit. Unknowns with a prescribed
 // displacement (the transmitting boundary's nodes, E nodes) get
 // a_{n+1} = (d_{n+1} - d~) / (beta dt^2). beta = 1/4, gamma = 1/2.
 //
 // Stability: the I group is unconditionally stable; the E group needs
-// dt <= explicit_stable_step(omega_max of E, {a_M, 0}) = 2 / omega_max.
+// dt <= explicit_stable_step(omega_max of E, {a_M, b_E}) (2 / omega_max
+// undamped).
 #pragma once
 
 #include "newmark.h"
@@ -71,12 +77,13 @@ class PartitionedNewmark
 public:
   /// M: consistent on I, lumped on E; K: all elements; K_implicit: the I
   /// elements' (its rows at E-only nodes zero). Fixed dofs as identity
-  /// rows of K and K_implicit and zero rows of M with a zero load. The
-  /// matrices must outlive the integrator.
+  /// rows of K and K_implicit and zero rows of M with a zero load.
+  /// b_explicit: b_E [s]. The matrices must outlive the integrator.
   PartitionedNewmark(
       Mat M, Mat K, Mat K_implicit, RayleighDamping damping, double dt,
       linalg::Factorization factorization,
-      std::shared_ptr<PrescribedDisplacement> prescribed = nullptr);
+      std::shared_ptr<PrescribedDisplacement> prescribed = nullptr,
+      double b_explicit = 0.0);
   ~PartitionedNewmark();
   PartitionedNewmark(const PartitionedNewmark&) = delete;
   PartitionedNewmark& operator=(const PartitionedNewmark&) = delete;
@@ -107,6 +114,7 @@ private:
 
   Mat _M, _K, _K_implicit;
   RayleighDamping _damping;
+  double _b_explicit; ///< b_E: stiffness damping of the E elements [s]
   double _dt;
   static constexpr double _beta = 0.25, _gamma = 0.5;
   Mat _A = nullptr; ///< the effective matrix (prescribed rows identity)
@@ -115,9 +123,10 @@ private:
   std::vector<double> _values;
   int _n = 0;
   Vec _u = nullptr, _v = nullptr, _a = nullptr, _f = nullptr, _u_prev = nullptr;
-  /// Work: predictors, right-hand side, images M v, K u, M a, K_I v.
+  /// Work: predictors, right-hand side, images M v, K u, M a, K_I v,
+  /// K_E v.
   Vec _d_p = nullptr, _v_p = nullptr, _rhs = nullptr, _Mv = nullptr,
-      _Ku = nullptr, _Ma = nullptr, _Kv = nullptr, _w = nullptr;
+      _Ku = nullptr, _Ma = nullptr, _Kv = nullptr, _Kev = nullptr, _w = nullptr;
   /// The state's damping force C v and reaction r (prescribed rows).
   Vec _cv = nullptr, _r = nullptr, _du = nullptr;
   Vec _mask = nullptr; ///< 1 at the prescribed rows

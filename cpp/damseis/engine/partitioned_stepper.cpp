@@ -12,9 +12,10 @@ const std::array<const char*, 4> state_names = {"u", "v", "a", "u_prev"};
 PartitionedStepper::PartitionedStepper(
     Mat M, Mat K, Mat K_implicit, dynamics::RayleighDamping damping, double dt,
     linalg::Factorization factorization,
-    std::shared_ptr<dynamics::PrescribedDisplacement> prescribed)
+    std::shared_ptr<dynamics::PrescribedDisplacement> prescribed,
+    double b_explicit)
     : _K(K), _newmark(M, K, K_implicit, damping, dt, factorization,
-                      std::move(prescribed)),
+                      std::move(prescribed), b_explicit),
       _restored{Vector(nullptr, false), Vector(nullptr, false),
                 Vector(nullptr, false), Vector(nullptr, false)}
 {

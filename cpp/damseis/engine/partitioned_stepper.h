@@ -17,7 +17,8 @@ public:
   PartitionedStepper(
       Mat M, Mat K, Mat K_implicit, dynamics::RayleighDamping damping,
       double dt, linalg::Factorization factorization,
-      std::shared_ptr<dynamics::PrescribedDisplacement> prescribed);
+      std::shared_ptr<dynamics::PrescribedDisplacement> prescribed,
+      double b_explicit = 0.0);
 
   Vec create_vector() const override;
   void start(Vec u0, Vec v0, Vec a0, Vec f0) override;
