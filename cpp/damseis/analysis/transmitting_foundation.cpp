@@ -146,14 +146,6 @@ TransmittingFoundation::TransmittingFoundation(
           "record "
        << _field->surface_delay() << " s late";
   results::print(fe.mesh()->comm(), line.str());
-  if (fe.dim() == 3)
-    results::warn(fe.mesh()->comm(),
-                  "the multi-transmitting boundary in 3D is a first version, "
-                  "not for studies: with the default drift control the "
-                  "block's corners drift away after a few seconds, with "
-                  "foundation.mtf_drift = 0.01 the crest history was 78% of "
-                  "its peak from the converged one "
-                  "(docs/studies/section3_foundation.md)");
 }
 
 namespace

@@ -58,6 +58,95 @@ gmsh::vectorpair split_band(const ArchDamGeometry& g, const ModelBox& e,
   return all;
 }
 
+namespace
+{
+using Corner = std::pair<int, std::array<double, 3>>;
+
+/// The corner points of entity (dim, tag) with their coordinates.
+std::vector<Corner> corners_of(int dim, int tag)
+{
+  gmsh::vectorpair points;
+  gmsh::model::getBoundary({{dim, tag}}, points, false, false, true);
+  std::vector<Corner> c;
+  for (const auto& [d, p] : points)
+  {
+    std::vector<double> x, none;
+    gmsh::model::getValue(0, std::abs(p), none, x);
+    c.push_back({std::abs(p), {x[0], x[1], x[2]}});
+  }
+  return c;
+}
+
+/// Four corners as (u-, v-), (u+, v-), (u+, v+), (u-, v+) in the axes u <
+/// v: the two with the smaller v first, each pair by u.
+std::vector<int> ordered(std::vector<Corner> c, int u, int v)
+{
+  std::sort(c.begin(), c.end(),
+            [&](const Corner& a, const Corner& b)
+            { return a.second[v] < b.second[v]; });
+  auto by_u = [&](const Corner& a, const Corner& b)
+  { return a.second[u] < b.second[u]; };
+  std::sort(c.begin(), c.begin() + 2, by_u);
+  std::sort(c.begin() + 2, c.end(), by_u);
+  return {c[0].first, c[1].first, c[3].first, c[2].first};
+}
+
+/// A band face's corners in the global frame: its in-plane axes are the
+/// two global axes other than its normal's (z for horizontal faces, else
+/// the larger of the normal's x and y).
+std::vector<int> surface_corners(int f)
+{
+  const std::vector<Corner> c = corners_of(2, f);
+  if (c.size() != 4)
+    throw std::runtime_error("arch dam: a face of the transmitting "
+                             "boundary's band has " +
+                             std::to_string(c.size()) + " corners, not 4");
+  std::array<double, 3> a{}, b{}, n{};
+  for (int k = 0; k < 3; ++k)
+  {
+    a[k] = c[1].second[k] - c[0].second[k];
+    b[k] = c[2].second[k] - c[0].second[k];
+  }
+  n = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+       a[0] * b[1] - a[1] * b[0]};
+  // Horizontal faces (bottoms and tops) have the normal z; the others are
+  // the pieces' sides, a wall's too (its normal may lean towards z): x or
+  // y, as the volumes' frame has them.
+  double z0 = c[0].second[2], z1 = z0;
+  for (const auto& corner : c)
+  {
+    z0 = std::min(z0, corner.second[2]);
+    z1 = std::max(z1, corner.second[2]);
+  }
+  const double size = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]) +
+                      std::sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
+  const int normal =
+      z1 - z0 < 1e-9 * size ? 2 : (std::abs(n[0]) > std::abs(n[1]) ? 0 : 1);
+  const int u = normal == 0 ? 1 : 0, v = normal == 2 ? 1 : 2;
+  return ordered(c, u, v);
+}
+
+/// A band piece's corners in the global frame: the bottom face's (the
+/// four lowest) in the order of ordered(x, y), then the top face's.
+std::vector<int> volume_corners(int vol)
+{
+  std::vector<Corner> c = corners_of(3, vol);
+  if (c.size() != 8)
+    throw std::runtime_error("arch dam: a piece of the transmitting "
+                             "boundary's band has " +
+                             std::to_string(c.size()) + " corners, not 8");
+  std::sort(c.begin(), c.end(),
+            [](const Corner& a, const Corner& b)
+            { return a.second[2] < b.second[2]; });
+  std::vector<int> out =
+      ordered(std::vector<Corner>(c.begin(), c.begin() + 4), 0, 1);
+  const std::vector<int> top =
+      ordered(std::vector<Corner>(c.begin() + 4, c.end()), 0, 1);
+  out.insert(out.end(), top.begin(), top.end());
+  return out;
+}
+} // namespace
+
 /// The band's volumes meshed as structured (transfinite) tetrahedra: each
 /// curve gets the node count of its interval, so that opposite edges of
 /// every piece match: along y and z by its extent (the band's layers of
@@ -119,10 +208,67 @@ void structure_band(const ArchDamGeometry& g, const ModelBox& e, double w,
     }
     gmsh::model::mesh::setTransfiniteCurve(c, n + 1);
   }
+  // The corners in one global frame, so that gmsh's split of every piece
+  // into tetrahedra matches the triangles of its faces, which its
+  // neighbours (pieces or the core) share: with gmsh's default corners a
+  // third of the faces did not (a non-conforming mesh).
   for (int f : surfaces)
-    gmsh::model::mesh::setTransfiniteSurface(f);
+    gmsh::model::mesh::setTransfiniteSurface(f, "Left", surface_corners(f));
   for (int v : band_volumes)
-    gmsh::model::mesh::setTransfiniteVolume(v);
+    gmsh::model::mesh::setTransfiniteVolume(v, volume_corners(v));
+}
+
+namespace
+{
+using Face = std::array<std::size_t, 3>;
+
+/// The sorted node triples of the mesh of entity (dim, tag):
+/// the faces of its tetrahedra (type 4) or its triangles (type 2).
+std::set<Face> faces_of(int dim, int tag)
+{
+  std::vector<int> types;
+  std::vector<std::vector<std::size_t>> elements, nodes;
+  gmsh::model::mesh::getElements(types, elements, nodes, dim, tag);
+  std::set<Face> faces;
+  for (std::size_t t = 0; t < types.size(); ++t)
+  {
+    const int per = dim == 3 ? 4 : 3;
+    for (std::size_t e = 0; e < nodes[t].size() / per; ++e)
+      for (int skip = 0; skip < (dim == 3 ? 4 : 1); ++skip)
+      {
+        Face f;
+        int m = 0;
+        for (int j = 0; j < per; ++j)
+          if (dim == 2 || j != skip)
+            f[m++] = nodes[t][per * e + j];
+        std::sort(f.begin(), f.end());
+        faces.insert(f);
+      }
+  }
+  return faces;
+}
+} // namespace
+
+std::vector<std::pair<int, int>>
+band_mismatches(const std::vector<int>& band_volumes)
+{
+  std::vector<std::pair<int, int>> out;
+  for (int v : band_volumes)
+  {
+    const std::set<Face> tets = faces_of(3, v);
+    gmsh::vectorpair bounding;
+    gmsh::model::getBoundary({{3, v}}, bounding, false, false, false);
+    for (const auto& [d, f] : bounding)
+    {
+      const std::set<Face> triangles = faces_of(2, std::abs(f));
+      const bool all =
+          std::all_of(triangles.begin(), triangles.end(),
+                      [&](const Face& t) { return tets.count(t) > 0; });
+      if (!all)
+        out.push_back({v, std::abs(f)});
+    }
+  }
+  return out;
 }
 
 } // namespace damseis::geometry

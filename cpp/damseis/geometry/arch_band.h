@@ -28,4 +28,8 @@ gmsh::vectorpair split_band(const ArchDamGeometry& g, const ModelBox& e,
 /// std::runtime_error if a piece is not a hexahedron.
 void structure_band(const ArchDamGeometry& g, const ModelBox& e, double w,
                     double h, const std::vector<int>& band_volumes);
+/// The (volume, surface) pairs of the meshed band whose surface triangles
+/// are not faces of the volume's tetrahedra (a non-conforming mesh).
+std::vector<std::pair<int, int>>
+band_mismatches(const std::vector<int>& band_volumes);
 } // namespace damseis::geometry

@@ -424,6 +424,15 @@ MeshArrays build_on_root(const ArchDamGeometry& g, bool verbose)
   const auto t1 = Clock::now();
   gmsh::model::mesh::generate(3);
   m.mesh_seconds = seconds_since(t1);
+  if (!band_vols.empty())
+  {
+    const auto bad = band_mismatches(band_vols);
+    if (!bad.empty())
+      throw std::runtime_error(
+          "arch dam: the transmitting boundary's band is not conforming: " +
+          std::to_string(bad.size()) +
+          " faces of its pieces are not faces of their tetrahedra");
+  }
 
   // Read nodes, tetrahedra and triangles of the physical groups
   std::vector<std::size_t> node_tags;
