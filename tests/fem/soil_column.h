@@ -43,8 +43,8 @@ inline double node_value(const dolfinx::fem::FunctionSpace& V, Vec x,
   VecGetArrayRead(x, &a);
   double v = 0.0;
   for (std::int32_t i = 0; i < n; ++i)
-    if (std::abs(X[3 * i] - p[0]) < 1e-9 &&
-        std::abs(X[3 * i + 1] - p[1]) < 1e-9)
+    if (std::hypot(X[3 * i] - p[0], X[3 * i + 1] - p[1], X[3 * i + 2] - p[2]) <
+        1e-9)
       v = a[bs * i + c];
   VecRestoreArrayRead(x, &a);
   return global_sum(v);

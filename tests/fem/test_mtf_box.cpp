@@ -58,23 +58,6 @@ struct BoxResult
   double stable_dt = 0.0;
 };
 
-/// The value of component c of x at the node at p (collective).
-double value_at(const dolfinx::fem::FunctionSpace& V, Vec x, const Point& p,
-                int c)
-{
-  const std::int32_t n = V.dofmap()->index_map->size_local();
-  const std::vector<double> X = V.tabulate_dof_coordinates(false);
-  const double* a = nullptr;
-  VecGetArrayRead(x, &a);
-  double v = 0.0;
-  for (std::int32_t i = 0; i < n; ++i)
-    if (std::hypot(X[3 * i] - p[0], X[3 * i + 1] - p[1], X[3 * i + 2] - p[2]) <
-        1e-9)
-      v = a[3 * i + c];
-  VecRestoreArrayRead(x, &a);
-  return global_sum(v);
-}
-
 /// Adds F at the node at p to every component of f (collective).
 void add_point_force(const dolfinx::fem::FunctionSpace& V, Vec f,
                      const Point& p, double F)
@@ -202,8 +185,8 @@ BoxResult run_box(const BoxCase& b)
     VecNorm(newmark.u(), NORM_INFINITY, &umax);
     r.peak = std::max(r.peak, umax);
     if (!b.point && b.notch == 0.0)
-      r.surface = std::max(r.surface, std::abs(value_at(*fe.V(), newmark.u(),
-                                                        source, b.component) -
+      r.surface = std::max(r.surface, std::abs(node_value(*fe.V(), newmark.u(),
+                                                          source, b.component) -
                                                pulse(A, b.T, k * dt - delay)) /
                                           A);
     if (!(umax < 1e3 * r.peak + 1.0)) // grown without bound: stop

@@ -142,6 +142,22 @@ double energy_growth(const Bar& bar, double dt, int steps,
     VecDestroy(v);
   return largest[1] / largest[0];
 }
+/// The lumped mass (h = 1: 1/2 at each end) of the bar's elements first
+/// to last - 1 (the explicit ones), zero elsewhere. The caller destroys it.
+Vec explicit_lumped_mass(const Bar& bar, int first, int last)
+{
+  Vec D;
+  MatCreateVecs(bar.K, &D, nullptr);
+  VecSet(D, 0.0);
+  for (int e = first; e < last; ++e)
+  {
+    VecSetValue(D, e, 0.5, ADD_VALUES);
+    VecSetValue(D, e + 1, 0.5, ADD_VALUES);
+  }
+  VecAssemblyBegin(D);
+  VecAssemblyEnd(D);
+  return D;
+}
 } // namespace
 
 TEST(PartitionedNewmark, StableStepIsTwoOverOmegaUndamped)
@@ -190,16 +206,7 @@ TEST(PartitionedNewmark, ExplicitStiffnessDampingLowersTheStableStep)
   // undamped limit is 1.35 times higher).
   Bar bar;
   make_bar(bar, 40, 20);
-  Vec lumped; // the explicit elements' lumped mass
-  MatCreateVecs(bar.K, &lumped, nullptr);
-  VecSet(lumped, 0.0);
-  for (int e = 20; e < 40; ++e)
-  {
-    VecSetValue(lumped, e, 0.5, ADD_VALUES);
-    VecSetValue(lumped, e + 1, 0.5, ADD_VALUES);
-  }
-  VecAssemblyBegin(lumped);
-  VecAssemblyEnd(lumped);
+  Vec lumped = explicit_lumped_mass(bar, 20, 40);
   const double w = damseis::dynamics::highest_explicit_frequency(
       bar.K, bar.K_implicit, lumped, {});
   VecDestroy(&lumped);
@@ -221,16 +228,7 @@ TEST(PartitionedNewmark, HighestExplicitFrequencyOfTheBar)
   // (4n)) = 2 - O(1/n^2)).
   Bar bar;
   make_bar(bar, 40, 20);
-  Vec D;
-  MatCreateVecs(bar.K, &D, nullptr);
-  VecSet(D, 0.0);
-  for (int e = 20; e < 40; ++e)
-  {
-    VecSetValue(D, e, 0.5, ADD_VALUES);
-    VecSetValue(D, e + 1, 0.5, ADD_VALUES);
-  }
-  VecAssemblyBegin(D);
-  VecAssemblyEnd(D);
+  Vec D = explicit_lumped_mass(bar, 20, 40);
   const double w = damseis::dynamics::highest_explicit_frequency(
       bar.K, bar.K_implicit, D, {});
   EXPECT_GT(w, 1.98);
