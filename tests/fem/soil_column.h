@@ -6,6 +6,8 @@
 #include "fem_test_support.h"
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <memory>
 #include <numbers>
 #include <vector>
 
@@ -48,6 +50,36 @@ inline double node_value(const dolfinx::fem::FunctionSpace& V, Vec x,
       v = a[bs * i + c];
   VecRestoreArrayRead(x, &a);
   return global_sum(v);
+}
+
+/// Tags the local cells of `model` whose centre satisfies `in_band` with
+/// `band_region`, the others with tags::dam (the model's cell tags are
+/// replaced), and returns the band's cells (the transmitting boundary's
+/// explicit group).
+inline std::vector<std::int32_t>
+tag_band(Model& model, int band_region,
+         const std::function<bool(const Point&)>& in_band)
+{
+  const int tdim = model.mesh->topology().dim();
+  const auto& dofs = model.mesh->geometry().dofmap();
+  std::span<const double> x = model.mesh->geometry().x();
+  const std::int32_t n = dofs.num_nodes();
+  std::vector<std::int32_t> cells(n), regions(n), band;
+  for (std::int32_t cell = 0; cell < n; ++cell)
+  {
+    Point mid{0, 0, 0};
+    auto nodes = dofs.links(cell);
+    for (auto node : nodes)
+      for (int k = 0; k < 3; ++k)
+        mid[k] += x[3 * node + k] / double(nodes.size());
+    cells[cell] = cell;
+    regions[cell] = in_band(mid) ? band_region : tags::dam;
+    if (regions[cell] == band_region)
+      band.push_back(cell);
+  }
+  model.cell_tags = std::make_shared<dolfinx::mesh::MeshTags<std::int32_t>>(
+      model.mesh, tdim, std::move(cells), std::move(regions));
+  return band;
 }
 
 /// A soil column's errors relative to the pulse's peak A.

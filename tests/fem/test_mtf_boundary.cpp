@@ -59,26 +59,10 @@ ColumnResult run_column(int c, double T, int degree, int order, int layers,
                                 });
   // The band: the cells within `layers` layers of the bottom and the sides.
   const double w = layers * h;
-  std::vector<std::int32_t> band;
-  {
-    const auto& dofs = model.mesh->geometry().dofmap();
-    std::span<const double> x = model.mesh->geometry().x();
-    std::vector<std::int32_t> cells(dofs.num_nodes()), regions(cells.size());
-    for (std::int32_t cell = 0; cell < dofs.num_nodes(); ++cell)
-    {
-      Point mid{0, 0, 0};
-      for (auto node : dofs.links(cell))
-        for (int k = 0; k < 2; ++k)
-          mid[k] += x[3 * node + k] / 3.0;
-      cells[cell] = cell;
-      const bool in_band = mid[0] < w || mid[0] > W - w || mid[1] < -H + w;
-      regions[cell] = in_band ? band_region : tags::dam;
-      if (in_band)
-        band.push_back(cell);
-    }
-    model.cell_tags = std::make_shared<dolfinx::mesh::MeshTags<std::int32_t>>(
-        model.mesh, 2, std::move(cells), std::move(regions));
-  }
+  const std::vector<std::int32_t> band =
+      tag_band(model, band_region,
+               [&](const Point& mid)
+               { return mid[0] < w || mid[0] > W - w || mid[1] < -H + w; });
   const boundary::Rock rock{20e9, 0.25, 2600.0};
   const damseis::fem::Material m{rock.E, rock.nu, rock.rho};
   damseis::fem::ElasticModel fe(model, degree,

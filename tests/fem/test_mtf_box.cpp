@@ -106,29 +106,13 @@ BoxResult run_box(const BoxCase& b)
             zb + (x[3 * i + 2] - zb) * (surface(x[3 * i]) - zb) / (0 - zb);
   }
   // The band: the cells within four layers of the bottom and the sides.
-  std::vector<std::int32_t> band;
-  {
-    const auto& dofs = model.mesh->geometry().dofmap();
-    std::span<const double> x = model.mesh->geometry().x();
-    const auto cmap = model.mesh->topology().index_map(3);
-    const std::int32_t n = cmap->size_local() + cmap->num_ghosts();
-    std::vector<std::int32_t> cells(n), regions(n);
-    for (std::int32_t cell = 0; cell < n; ++cell)
-    {
-      Point mid{0, 0, 0};
-      for (auto node : dofs.links(cell))
-        for (int k = 0; k < 3; ++k)
-          mid[k] += x[3 * node + k] / 4.0;
-      cells[cell] = cell;
-      const bool in_band = mid[0] < w || mid[0] > W - w || mid[1] < w ||
-                           mid[1] > W - w || mid[2] < -H + w;
-      regions[cell] = in_band ? band_region : tags::dam;
-      if (in_band)
-        band.push_back(cell);
-    }
-    model.cell_tags = std::make_shared<dolfinx::mesh::MeshTags<std::int32_t>>(
-        model.mesh, 3, std::move(cells), std::move(regions));
-  }
+  const std::vector<std::int32_t> band =
+      tag_band(model, band_region,
+               [&](const Point& mid)
+               {
+                 return mid[0] < w || mid[0] > W - w || mid[1] < w ||
+                        mid[1] > W - w || mid[2] < -H + w;
+               });
   const boundary::Rock rock{20e9, 0.25, 2600.0};
   const damseis::fem::Material m{rock.E, rock.nu, rock.rho};
   damseis::fem::ElasticModel fe(model, 1, {{tags::dam, m}, {band_region, m}});

@@ -196,7 +196,7 @@ void TransmittingFoundation::check_time_step(dynamics::RayleighDamping damping,
 {
   // 2 % above the power iteration's estimate (it approaches the highest
   // frequency from below); the band takes the mass-proportional damping
-  // alone, implicitly.
+  // implicitly and its own stiffness damping b_E explicitly.
   _stable_dt = dynamics::explicit_stable_step(1.02 * _omega,
                                               {damping.a_mass, _b_explicit});
   std::ostringstream line;
