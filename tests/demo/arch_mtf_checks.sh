@@ -15,9 +15,19 @@
 #    from the static state) against PartitionedNewmark (the state relative
 #    to the static one): the crest's seismic history within 1e-4 of its
 #    peak (the Newton tolerance is 1e-6 of the load, static included).
-# 4. Bad input exits 2 with one line before any work: a U canyon,
-#    P2 (no midside nodes along the normals in the 3D band), a band
-#    reaching the rims, contact joints, HHT alpha.
+# 4. Contact joints on it (the nonlinear engine's constrained Newton with
+#    the partition), their bonds too strong to break: the joints stay
+#    closed and stuck, so the crest's seismic history is the bonded
+#    joints' (check 3's HTC elastic run) to 1e-4 of its peak (as check 3:
+#    the Newton tolerance is 1e-6 of the load, static included); on 2
+#    ranks the serial one to 1e-8.
+# 5. The band implicit (foundation.band_integration), the step 5 ms (s =
+#    0.9; the explicit band's stable step is 1.8 ms): 2 ranks give the
+#    serial crest history to 1e-8 (the prescribed rows' coupling moved to
+#    the right-hand side on each rank's rows).
+# 6. Bad input exits 2 with one line before any work: a U canyon, order
+#    2 on P2, a band reaching the rims, contact joints in the linear
+#    engine, HHT alpha.
 # Usage: arch_mtf_checks.sh ARCH_DAM PYTHON MPIEXEC
 set -u
 exe=$1 python=$2 mpiexec=$3
@@ -39,6 +49,15 @@ set -e
 "$exe" --out "$work/elastic" "${common[@]}" --set material.model=elastic \
   >/dev/null
 "$mpiexec" -n 2 "$exe" --out "$work/mpi" "${common[@]}" >/dev/null
+contact=("${common[@]}" --set material.model=elastic --set joints.model=contact
+         --set "joints.tensile_strength=[1e8, 1e8, 1e8]"
+         --set "joints.cohesion=[1e8, 1e8, 1e8]")
+implicit=("${common[@]}" --set foundation.band_integration=implicit
+          --set time.dt=0.005)
+"$exe" --out "$work/implicit" "${implicit[@]}" >/dev/null
+"$mpiexec" -n 2 "$exe" --out "$work/implicit_mpi" "${implicit[@]}" >/dev/null
+"$exe" --out "$work/contact" "${contact[@]}" >/dev/null 2>&1
+"$mpiexec" -n 2 "$exe" --out "$work/contact_mpi" "${contact[@]}" >/dev/null 2>&1
 "$python" - "$work" <<'PY'
 import json, sys
 import numpy as np
@@ -79,17 +98,34 @@ d_engine = np.abs(a - c).max() / peak
 print(f"crest's seismic peak {peak:.3e} m; HTC elastic against the linear "
       f"engine {d_engine:.1e}")
 assert peak > 1e-5, peak  # the waves reached the dam
+k = crest("contact", seismic)
+s = json.load(open(f"{w}/contact/summary.json"))
+assert "contact joints" in s["analysis"], s["analysis"]
+d_contact = np.abs(k - c).max() / peak
+d_contact_mpi = np.abs(k - crest("contact_mpi", seismic)).max() / peak
+print(f"contact joints with unbreakable bonds against bonded joints "
+      f"{d_contact:.1e}; 2 ranks against serial {d_contact_mpi:.1e}")
+assert d_contact < 1e-4, d_contact
+assert d_contact_mpi < 1e-8, d_contact_mpi
+i = crest("implicit", seismic)
+d_implicit = np.abs(i - crest("implicit_mpi", seismic)).max() / np.abs(i).max()
+print(f"implicit band, dt 5 ms: crest's seismic peak {np.abs(i).max():.3e} m "
+      f"(explicit, 1.5 ms: {peak:.3e}); 2 ranks against serial "
+      f"{d_implicit:.1e}")
+assert d_implicit < 1e-8, d_implicit
+assert np.abs(i).max() > 1e-5
 assert d_engine < 1e-4, d_engine
 PY
 set +e
 
 expect mtf_u_canyon 'canyon\.shape = "v"' "${mtf[@]}" --set canyon.shape=u \
   --set canyon.u_radius=20
-expect mtf_p2 'mesh\.order.*must be 1' "${mtf[@]}" --set mesh.order=2
+expect mtf_order_two_on_p2 'foundation\.mtf_order.*mesh\.order = 1' "${mtf[@]}" \
+  --set mesh.order=2
 expect mtf_band_too_thick 'foundation\.band_size.*reach' "${mtf[@]}" \
   --set foundation.band_layers=6
-expect mtf_contact 'foundation\.boundary.*contact joints' "${mtf[@]}" \
-  --set joints.model=contact
+expect mtf_contact_linear 'foundation\.boundary.*contact joints in the nonlinear engine.*material\.model = "elastic"' \
+  "${mtf[@]}" --set joints.model=contact
 expect mtf_hht 'time\.hht_alpha.*must be 0' "${mtf[@]}" --set time.hht_alpha=-0.1
 expect mtf_band_too_thin 'foundation\.band_layers.*at least 4 layers' \
   "${mtf[@]}" --set foundation.band_layers=3

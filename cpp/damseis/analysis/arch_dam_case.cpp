@@ -210,18 +210,13 @@ void read_transmitting(const input::Case& c, ArchDamConfig& a,
              "the band's pieces along the walls must be hexahedra",
              "canyon.shape = \"v\", or foundation.boundary = "
              "\"viscous_spring\"");
-    if (a.joints == JointModel::contact)
-      c.fail("foundation.boundary", "mtf does not yet take contact joints",
-             "joints.model = \"bonded\", or foundation.boundary = "
-             "\"viscous_spring\" with contact joints");
-    if (a.order != 1)
-      c.fail("mesh.order",
-             "must be 1 with a multi-transmitting boundary in 3D: the band's "
-             "structured tetrahedra have no midside nodes at half spacing "
-             "along the boundary's normals, which the formula's stencils "
-             "need",
-             "mesh.order = 1 (the dam then needs a finer mesh.size against "
-             "shell locking), or foundation.boundary = \"viscous_spring\"");
+    if (a.joints == JointModel::contact &&
+        a.concrete_model.kind == ConcreteModelKind::linear)
+      c.fail("foundation.boundary",
+             "mtf takes contact joints in the nonlinear engine only",
+             "material.model = \"elastic\" (the same linear elastic dam in "
+             "the nonlinear engine), or foundation.boundary = "
+             "\"viscous_spring\"");
   }
   BandKeys band;
   a.transmitting = read_transmitting_keys(c, a.order, active, band);

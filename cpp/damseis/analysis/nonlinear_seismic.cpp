@@ -205,9 +205,6 @@ ConcreteSeismicAnalysis::ConcreteSeismicAnalysis(
 
 void ConcreteSeismicAnalysis::set_up_transmitting()
 {
-  if (_contact)
-    throw std::invalid_argument("a multi-transmitting boundary does not yet "
-                                "take contact joints");
   if (_loads.initial_velocity)
     throw std::invalid_argument("an initial velocity is not available with "
                                 "a multi-transmitting boundary");
@@ -237,9 +234,6 @@ void ConcreteSeismicAnalysis::set_up_contact(SeismicSystem& sys, Mat joint_tie)
   if (!joint_tie)
     throw std::invalid_argument("contact joints need the tie of the same "
                                 "joints for the modal stage");
-  if (_wave && _wave->mtf)
-    throw std::invalid_argument("a multi-transmitting boundary does not yet "
-                                "take contact joints");
   // The modes of the joints bonded (the natural frequencies and the
   // Rayleigh damping of the closed dam).
   _K_bonded = Matrix(fem::reduce_to_tied(sys.K.mat(), joint_tie), false);

@@ -94,11 +94,12 @@ TransmittingFoundation::TransmittingFoundation(
     : _fe(fe), _wave(wave), _field(std::move(field)), _ground(ground), _tie(tie)
 {
   const Transmitting& t = *wave.mtf;
-  // The band's cells are the explicit group.
+  // The band's cells are the explicit group (none if it is implicit).
   const std::vector<std::int32_t> band =
       region_cells(fe.model(), t.band_region);
-  fem::ElasticModel::Partitioned p =
-      fe.assemble_partitioned({t.band_region}, reservoir);
+  fem::ElasticModel::Partitioned p = fe.assemble_partitioned(
+      t.band_explicit ? std::vector<int>{t.band_region} : std::vector<int>{},
+      reservoir);
   _K = Matrix(p.K, false);
   _K_implicit = Matrix(p.K_implicit, false);
   _M = Matrix(p.M, false);
@@ -138,12 +139,14 @@ TransmittingFoundation::TransmittingFoundation(
   std::ostringstream line;
   line << "foundation with mass, multi-transmitting boundary (order " << t.order
        << ", drift " << t.drift << ", s = c_p dt / dx = " << m.courant() << ", "
-       << nodes[0] << " nodes, " << nodes[1]
-       << " on the bottom), the band explicit (highest frequency "
-       << _omega / (2.0 * std::numbers::pi) << " Hz, damped "
-       << 100.0 * t.band_damping << "% there: b_E = " << _b_explicit
-       << " s), vertically incident waves: the surface moves with the "
-          "record "
+       << nodes[0] << " nodes, " << nodes[1] << " on the bottom), ";
+  if (t.band_explicit)
+    line << "the band explicit (highest frequency "
+         << _omega / (2.0 * std::numbers::pi) << " Hz, damped "
+         << 100.0 * t.band_damping << "% there: b_E = " << _b_explicit << " s)";
+  else
+    line << "the band implicit";
+  line << ", vertically incident waves: the surface moves with the record "
        << _field->surface_delay() << " s late";
   results::print(fe.mesh()->comm(), line.str());
 }
@@ -199,10 +202,13 @@ void TransmittingFoundation::check_time_step(dynamics::RayleighDamping damping,
   // implicitly and its own stiffness damping b_E explicitly.
   _stable_dt = dynamics::explicit_stable_step(1.02 * _omega,
                                               {damping.a_mass, _b_explicit});
-  std::ostringstream line;
-  line << "explicit band: stable time step " << _stable_dt
-       << " s (Hughes-Liu partition); time.dt = " << scheme.dt << " s";
-  results::print(_fe.mesh()->comm(), line.str());
+  if (_wave.mtf->band_explicit)
+  {
+    std::ostringstream line;
+    line << "explicit band: stable time step " << _stable_dt
+         << " s (Hughes-Liu partition); time.dt = " << scheme.dt << " s";
+    results::print(_fe.mesh()->comm(), line.str());
+  }
   if (scheme.dt > _stable_dt)
   {
     std::ostringstream m;
@@ -251,16 +257,18 @@ TransmittingFoundation::load(dynamics::RayleighDamping damping, double dt,
 nlohmann::json TransmittingFoundation::summary() const
 {
   const auto nodes = _mtf->node_counts();
-  return {{"order", _wave.mtf->order},
-          {"drift", _wave.mtf->drift},
-          {"band_damping", _wave.mtf->band_damping},
-          {"band_stiffness_damping_s", _b_explicit},
-          {"spacing_m", _wave.mtf->spacing},
-          {"artificial_speeds_m_s", {_wave.rock.cp(), _wave.rock.cs()}},
-          {"courant_s", _mtf->settings().courant()},
-          {"boundary_nodes", nodes[0]},
-          {"bottom_nodes", nodes[1]},
-          {"band_highest_frequency_hz", _omega / (2.0 * std::numbers::pi)},
-          {"stable_dt_s", _stable_dt}};
+  return {
+      {"order", _wave.mtf->order},
+      {"drift", _wave.mtf->drift},
+      {"band_integration", _wave.mtf->band_explicit ? "explicit" : "implicit"},
+      {"band_damping", _wave.mtf->band_damping},
+      {"band_stiffness_damping_s", _b_explicit},
+      {"spacing_m", _wave.mtf->spacing},
+      {"artificial_speeds_m_s", {_wave.rock.cp(), _wave.rock.cs()}},
+      {"courant_s", _mtf->settings().courant()},
+      {"boundary_nodes", nodes[0]},
+      {"bottom_nodes", nodes[1]},
+      {"band_highest_frequency_hz", _omega / (2.0 * std::numbers::pi)},
+      {"stable_dt_s", _stable_dt}};
 }
 } // namespace damseis::analysis

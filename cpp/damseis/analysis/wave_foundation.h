@@ -40,6 +40,9 @@ struct Transmitting
   double band_damping = 0.0;
   double spacing = 0.0; ///< node spacing of the band along its normals [m]
   int band_region = 0;  ///< the band's cell tag
+  /// The band explicit with lumped mass (the Hughes-Liu partition), or
+  /// implicit with the rest (consistent mass; no stable step of its own).
+  bool band_explicit = true;
 };
 
 struct WaveFoundation

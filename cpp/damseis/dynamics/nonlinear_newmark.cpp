@@ -428,9 +428,6 @@ const linalg::DirectSolver& NonlinearNewmark::initial_solver(int level,
 
 void NonlinearNewmark::set_constraint(NewtonConstraint* constraint)
 {
-  if (constraint && _partition.K_implicit)
-    throw std::invalid_argument("a Newton constraint (contact joints) is "
-                                "not available with a partition");
   _constraint = constraint;
   _constraint_level = -1;
 }
@@ -441,9 +438,6 @@ void NonlinearNewmark::set_partition(Partition partition)
     throw std::invalid_argument("the implicit-explicit partition is "
                                 "Newmark's average acceleration: HHT alpha "
                                 "must be 0");
-  if (_constraint)
-    throw std::invalid_argument("a Newton constraint (contact joints) is "
-                                "not available with a partition");
   if (!partition.K_implicit || !partition.K_explicit)
     throw std::invalid_argument("a partition needs K_implicit and "
                                 "K_explicit");

@@ -154,28 +154,33 @@ PartitionedNewmark::PartitionedNewmark(
   MatAXPY(_A, 1.0 + _gamma * dt * damping.a_mass, M, DIFFERENT_NONZERO_PATTERN);
   const std::vector<PetscInt> none;
   const std::vector<PetscInt>& rows = _prescribed ? _prescribed->rows() : none;
-  // The prescribed rows must be explicit (E nodes alone): then their
-  // columns are zero too and identity rows keep A symmetric.
+  // Prescribed rows of explicit (E-only) nodes are diagonal: their columns
+  // are zero too and identity rows keep A symmetric. Coupled ones (an
+  // implicit band) have their columns moved to the right-hand side.
+  int coupled = 0;
   for (PetscInt row : rows)
   {
     PetscInt n = 0;
     const PetscInt* cols = nullptr;
     const PetscScalar* vals = nullptr;
     MatGetRow(_A, row, &n, &cols, &vals);
-    bool diagonal = true;
     for (PetscInt j = 0; j < n; ++j)
-      diagonal = diagonal && (cols[j] == row || vals[j] == 0.0);
+      coupled = coupled || (cols[j] != row && vals[j] != 0.0);
     MatRestoreRow(_A, row, &n, &cols, &vals);
-    if (!diagonal)
-      throw std::invalid_argument(
-          "a prescribed unknown is coupled to others in the effective "
-          "matrix: it must belong to explicit (lumped) elements alone");
   }
-  MatZeroRows(_A, static_cast<PetscInt>(rows.size()), rows.data(), 1.0, nullptr,
-              nullptr);
-  _values.resize(rows.size());
   MPI_Comm comm;
   PetscObjectGetComm(reinterpret_cast<PetscObject>(K), &comm);
+  MPI_Allreduce(MPI_IN_PLACE, &coupled, 1, MPI_INT, MPI_MAX, comm);
+  if (coupled)
+  {
+    _A_lift = linalg::duplicate_matrix(_A, MAT_COPY_VALUES);
+    MatZeroRowsColumns(_A, static_cast<PetscInt>(rows.size()), rows.data(), 1.0,
+                       nullptr, nullptr);
+  }
+  else
+    MatZeroRows(_A, static_cast<PetscInt>(rows.size()), rows.data(), 1.0,
+                nullptr, nullptr);
+  _values.resize(rows.size());
   _solver = std::make_unique<linalg::DirectSolver>(comm, factorization);
   _solver->factorize(_A);
 
@@ -198,6 +203,7 @@ PartitionedNewmark::~PartitionedNewmark()
                  &_Ma, &_Kv, &_Kev, &_w, &_cv, &_r, &_du, &_mask})
     VecDestroy(x);
   MatDestroy(&_A);
+  MatDestroy(&_A_lift);
 }
 
 void PartitionedNewmark::set_state(Vec u, Vec v, Vec a, Vec f, Vec u_prev,
@@ -281,6 +287,17 @@ void PartitionedNewmark::step(Vec f_next)
                  d.data());
     for (std::size_t i = 0; i < rows.size(); ++i)
       b[i] = (_values[i] - d[i]) / bdt2;
+    if (_A_lift)
+    {
+      // rhs -= A x, x the prescribed accelerations (zero elsewhere).
+      VecSet(_w, 0.0);
+      VecSetValues(_w, static_cast<PetscInt>(rows.size()), rows.data(),
+                   b.data(), INSERT_VALUES);
+      VecAssemblyBegin(_w);
+      VecAssemblyEnd(_w);
+      MatMult(_A_lift, _w, _Ma);
+      VecAXPY(_rhs, -1.0, _Ma);
+    }
     VecSetValues(_rhs, static_cast<PetscInt>(rows.size()), rows.data(),
                  b.data(), INSERT_VALUES);
     VecAssemblyBegin(_rhs);

@@ -20,7 +20,9 @@
 // rows of nodes touched by
 // E elements alone are diagonal: explicit. Unknowns with a prescribed
 // displacement (the transmitting boundary's nodes, E nodes) get
-// a_{n+1} = (d_{n+1} - d~) / (beta dt^2). beta = 1/4, gamma = 1/2.
+// a_{n+1} = (d_{n+1} - d~) / (beta dt^2); where they are coupled to
+// others (the band implicit: no E group) their columns' terms move to the
+// right-hand side. beta = 1/4, gamma = 1/2.
 //
 // Stability: the I group is unconditionally stable; the E group needs
 // dt <= explicit_stable_step(omega_max of E, {a_M, b_E}) (2 / omega_max
@@ -118,6 +120,9 @@ private:
   double _dt;
   static constexpr double _beta = 0.25, _gamma = 0.5;
   Mat _A = nullptr; ///< the effective matrix (prescribed rows identity)
+  /// A before its prescribed rows and columns were zeroed, where they are
+  /// coupled to others (null: none are).
+  Mat _A_lift = nullptr;
   std::unique_ptr<linalg::DirectSolver> _solver;
   std::shared_ptr<PrescribedDisplacement> _prescribed;
   std::vector<double> _values;

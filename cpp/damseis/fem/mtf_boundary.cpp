@@ -1,10 +1,12 @@
 #include "mtf_boundary.h"
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <damseis/geometry/root_status.h>
 #include <damseis/linalg/all_gather.h>
 #include <dolfinx/common/IndexMap.h>
 #include <dolfinx/fem/DofMap.h>
+#include <dolfinx/fem/FiniteElement.h>
 #include <dolfinx/la/petsc.h>
 #include <dolfinx/mesh/Mesh.h>
 #include <dolfinx/mesh/utils.h>
@@ -189,68 +191,136 @@ boundary_nodes(const dolfinx::fem::FunctionSpace& V,
   return nodes;
 }
 
-/// The band's nodes of every rank (global blocks and coordinates) in a
-/// grid of cells of size dx, found by their coordinates.
-struct BandNodes
+/// The band's cells of every rank (their vertices and the global blocks of
+/// their nodes) in a grid of boxes of the band's cell size, and the
+/// weights that interpolate the field at a point from its cell's nodes
+/// (the element's basis there: at a node, that node alone).
+class BandCells
 {
-  BandNodes(const dolfinx::fem::FunctionSpace& V,
-            const std::vector<std::int32_t>& cells, double dx)
-      : dx(dx)
+public:
+  BandCells(const dolfinx::fem::FunctionSpace& V,
+            const std::vector<std::int32_t>& cells, double size)
+      : _size(size), _tdim(V.mesh()->topology().dim()),
+        _element(V.dofmap()->index_map_bs() > 1
+                     ? V.element()->extract_sub_element({0})
+                     : V.element())
   {
-    // The nodes of this rank's band cells (owned and ghost: a node's band
-    // cells may all lie on another rank than the node's owner), of every
-    // rank, each once.
+    if (_element->needs_dof_transformations())
+      throw std::invalid_argument("the multi-transmitting boundary needs a "
+                                  "Lagrange element (no dof transformations)");
+    const auto& mesh = *V.mesh();
     const auto& dofmap = *V.dofmap();
-    const auto& map = *dofmap.index_map;
-    const std::vector<double> X = V.tabulate_dof_coordinates(false);
     const std::vector<std::int64_t> global = global_blocks(V);
-    std::vector<std::int8_t> in_band(map.size_local() + map.num_ghosts(), 0);
+    const std::int32_t owned_cells =
+        mesh.topology().index_map(_tdim)->size_local();
+    const auto& x_dofmap = mesh.geometry().dofmap();
+    std::span<const double> x = mesh.geometry().x();
+    _nodes = _element->space_dimension();
+    // This rank's owned band cells (a ghost is another rank's owned cell).
     for (std::int32_t c : cells)
+    {
+      if (c >= owned_cells)
+        continue;
+      auto g = x_dofmap.links(c);
+      for (int v = 0; v <= _tdim; ++v)
+        _x.insert(_x.end(), x.begin() + 3 * g[v], x.begin() + 3 * g[v] + 3);
       for (std::int32_t b : dofmap.cell_dofs(c))
-        in_band[b] = 1;
-    for (std::size_t b = 0; b < in_band.size(); ++b)
-      if (in_band[b])
+        _blocks.push_back(global[b]);
+    }
+    const MPI_Comm comm = mesh.comm();
+    _x = linalg::all_gather(comm, _x);
+    _blocks = linalg::all_gather(comm, _blocks);
+    const int nv = _tdim + 1;
+    const std::size_t n = _x.size() / (3 * nv);
+    for (std::size_t c = 0; c < n; ++c)
+    {
+      Key lo, hi;
+      for (int j = 0; j < 3; ++j)
       {
-        blocks.push_back(global[b]);
-        x.insert(x.end(), X.begin() + 3 * b, X.begin() + 3 * b + 3);
-      }
-    const MPI_Comm comm = V.mesh()->comm();
-    blocks = linalg::all_gather(comm, blocks);
-    x = linalg::all_gather(comm, x);
-    std::map<std::int64_t, std::int32_t> unique;
-    for (std::size_t i = 0; i < blocks.size(); ++i)
-      if (unique.try_emplace(blocks[i], static_cast<std::int32_t>(i)).second)
-        grid[key({x[3 * i], x[3 * i + 1], x[3 * i + 2]})].push_back(
-            static_cast<std::int32_t>(i));
-  }
-  /// The index of the node at p (within 1e-6 dx), or -1.
-  std::int32_t find(const Point& p) const
-  {
-    const auto k = key(p);
-    for (std::int64_t i = -1; i <= 1; ++i)
-      for (std::int64_t j = -1; j <= 1; ++j)
-        for (std::int64_t l = -1; l <= 1; ++l)
+        double a = _x[3 * nv * c + j], b = a;
+        for (int v = 1; v < nv; ++v)
         {
-          auto it = grid.find({k[0] + i, k[1] + j, k[2] + l});
-          if (it == grid.end())
-            continue;
-          for (std::int32_t q : it->second)
-            if (std::hypot(x[3 * q] - p[0], x[3 * q + 1] - p[1],
-                           x[3 * q + 2] - p[2]) < 1e-6 * dx)
-              return q;
+          a = std::min(a, _x[3 * (nv * c + v) + j]);
+          b = std::max(b, _x[3 * (nv * c + v) + j]);
         }
-    return -1;
+        lo[j] = key(a - 1e-6 * _size);
+        hi[j] = key(b + 1e-6 * _size);
+      }
+      for (auto i = lo[0]; i <= hi[0]; ++i)
+        for (auto j = lo[1]; j <= hi[1]; ++j)
+          for (auto k = lo[2]; k <= hi[2]; ++k)
+            _grid[{i, j, k}].push_back(static_cast<std::int32_t>(c));
+    }
   }
-  std::array<std::int64_t, 3> key(const Point& p) const
+
+  /// The global blocks and weights that interpolate the field at p, or
+  /// none if no band cell contains p.
+  std::vector<std::pair<std::int64_t, double>> weights(const Point& p) const
   {
-    return {static_cast<std::int64_t>(std::floor(p[0] / dx)),
-            static_cast<std::int64_t>(std::floor(p[1] / dx)),
-            static_cast<std::int64_t>(std::floor(p[2] / dx))};
+    auto it = _grid.find({key(p[0]), key(p[1]), key(p[2])});
+    if (it == _grid.end())
+      return {};
+    // The cell with p deepest inside (the largest least barycentric).
+    std::int32_t best = -1;
+    std::array<double, 3> X_best{};
+    double depth = -1e-8;
+    for (std::int32_t c : it->second)
+    {
+      const auto [X, least] = reference(c, p);
+      if (least > depth)
+      {
+        depth = least;
+        best = c;
+        X_best = X;
+      }
+    }
+    if (best < 0)
+      return {};
+    const auto [phi, shape] =
+        _element->tabulate(std::span<const double>(X_best.data(), _tdim),
+                           {1, static_cast<std::size_t>(_tdim)}, 0);
+    std::vector<std::pair<std::int64_t, double>> w;
+    for (int i = 0; i < _nodes; ++i)
+      if (std::abs(phi[i]) > 1e-12)
+        w.emplace_back(_blocks[best * _nodes + i], phi[i]);
+    return w;
   }
-  double dx;
-  std::vector<std::int64_t> blocks;
-  std::vector<double> x;
-  std::map<std::array<std::int64_t, 3>, std::vector<std::int32_t>> grid;
+
+private:
+  using Key = std::array<std::int64_t, 3>;
+  std::int64_t key(double x) const
+  {
+    return static_cast<std::int64_t>(std::floor(x / _size));
+  }
+  /// p's reference coordinates in cell c (affine map from its vertices)
+  /// and its least barycentric coordinate.
+  std::pair<std::array<double, 3>, double> reference(std::int32_t c,
+                                                     const Point& p) const
+  {
+    const int nv = _tdim + 1;
+    const double* v = _x.data() + 3 * nv * c;
+    Eigen::Matrix3d J = Eigen::Matrix3d::Identity();
+    Eigen::Vector3d r = Eigen::Vector3d::Zero();
+    for (int i = 0; i < _tdim; ++i)
+    {
+      for (int j = 1; j <= _tdim; ++j)
+        J(i, j - 1) = v[3 * j + i] - v[i];
+      r(i) = p[i] - v[i];
+    }
+    const Eigen::Vector3d X = J.partialPivLu().solve(r);
+    double least = 1.0;
+    for (int i = 0; i < _tdim; ++i)
+      least = std::min(least, X(i));
+    least = std::min(least, 1.0 - X.head(_tdim).sum());
+    return {{X(0), X(1), X(2)}, least};
+  }
+
+  double _size;
+  int _tdim, _nodes = 0;
+  std::shared_ptr<const dolfinx::fem::FiniteElement> _element;
+  std::vector<double> _x;            ///< per cell, its vertices (3 each)
+  std::vector<std::int64_t> _blocks; ///< per cell, its nodes' global blocks
+  std::map<Key, std::vector<std::int32_t>> _grid;
 };
 } // namespace
 
@@ -288,13 +358,14 @@ MtfBoundary::MtfBoundary(const dolfinx::fem::FunctionSpace& V,
   const double dx = s.spacing;
   const std::map<std::int32_t, Node> nodes =
       boundary_nodes(V, facets, boundary_tags);
-  const BandNodes band(V, band_cells, s.spacing);
+  const BandCells band(V, band_cells, s.spacing);
 
-  // The stencils, and the blocks they gather.
+  // The stencils: per node and k, the gathered blocks and their weights.
   const int width = _normal.stencil();
-  std::map<std::int32_t, std::int32_t> position; // band index -> buffer
+  std::map<std::int64_t, std::int32_t> position; // global block -> buffer
   std::vector<PetscInt> gathered;
   std::string missing;
+  _offsets.push_back(0);
   for (const auto& [b, node] : nodes)
   {
     for (int k = 0; k < width && missing.empty(); ++k)
@@ -302,24 +373,29 @@ MtfBoundary::MtfBoundary(const dolfinx::fem::FunctionSpace& V,
       Point p = node.x;
       for (int j = 0; j < 3; ++j)
         p[j] -= k * dx * node.normal[j];
-      const std::int32_t q = band.find(p);
-      if (q < 0)
+      const auto weights = band.weights(p);
+      if (weights.empty())
       {
-        missing = "the foundation has no structured band for the "
-                  "multi-transmitting boundary: no node at " +
+        missing = "the foundation has no band for the multi-transmitting "
+                  "boundary at " +
                   format(p, tdim) + ", " + std::to_string(k) +
                   " node spacings inward of the boundary node at " +
                   format(node.x, tdim) +
-                  " (the band needs 2N + 1 node layers of spacing " +
-                  std::to_string(dx) + " m along the boundary's normals)";
+                  " (the band must reach 2N node spacings of " +
+                  std::to_string(dx) + " m inward along the normals)";
         break;
       }
-      auto [it, inserted] =
-          position.try_emplace(q, static_cast<std::int32_t>(position.size()));
-      if (inserted)
-        for (int c = 0; c < _dim; ++c)
-          gathered.push_back(band.blocks[q] * _dim + c);
-      _stencil.push_back(it->second);
+      for (const auto& [block, w] : weights)
+      {
+        auto [it, inserted] = position.try_emplace(
+            block, static_cast<std::int32_t>(position.size()));
+        if (inserted)
+          for (int c = 0; c < _dim; ++c)
+            gathered.push_back(block * _dim + c);
+        _positions.push_back(it->second);
+        _weights.push_back(w);
+      }
+      _offsets.push_back(static_cast<std::int32_t>(_positions.size()));
     }
     _nodes.push_back(node);
     for (int c = 0; c < _dim; ++c)
@@ -380,11 +456,15 @@ void MtfBoundary::values(int n_next, Vec u_n, Vec u_prev, std::span<double> out)
         for (int d = 0; d < 3; ++d)
           p[d] -= k * dx * node.normal[d];
         const std::array<double, 3> in = _known(p, node.bottom, t - j * dt);
-        const std::int32_t q = _stencil[i * width + k];
+        std::array<double, 3> v{};
+        const std::size_t at = i * width + k;
+        for (std::int32_t e = _offsets[at]; e < _offsets[at + 1]; ++e)
+          for (int c = 0; c < _dim; ++c)
+            v[c] += _weights[e] * history[_positions[e] * _dim + c];
         const double wn = _normal.weight(j, k), wt = _tangential.weight(j, k);
         for (int c = 0; c < _dim; ++c)
         {
-          const double scattered = history[q * _dim + c] - in[c];
+          const double scattered = v[c] - in[c];
           normal[c] += wn * scattered;
           tangential[c] += wt * scattered;
         }

@@ -1,8 +1,12 @@
 // Liao's multi-transmitting formula (boundary::MultiTransmittingFormula) on
 // the nodes of a mesh's artificial boundary (algorithms.md 3.3-3.4): each
-// boundary node x_0 with outward normal nu reads the nodes x_k = x_0 - k dx
-// nu (k = 0..2N) of a structured band of uniform node spacing dx along the
-// normal, and its displacement at the next step is
+// boundary node x_0 with outward normal nu reads the field at the points
+// x_k = x_0 - k dx nu (k = 0..2N) of the band along the normal (dx the node
+// spacing), interpolated in the band's cells (where the band is
+// structured along the normal, as the meshes make it for P1, x_k is a node
+// and its value is read alone; on P2 tetrahedra of sheared hexahedra the
+// points between the layers are not all nodes), and its displacement at
+// the next step is
 //   u_0^(p+1) = u_in(x_0, t_(p+1)) + MTF[u - u_in],
 // the formula applied to each Cartesian component of the field less the
 // known one, with the artificial speed c_p for the part along the normal
@@ -56,9 +60,8 @@ class MtfBoundary : public dynamics::PrescribedDisplacement
 public:
   /// The nodes of V on the facets tagged `boundary_tags`, their stencils
   /// among the nodes of `band_cells` (local cells; the structured band).
-  /// Throws std::invalid_argument (one line) if a stencil node is missing
-  /// (the mesh has no structured band of that spacing) or s is outside
-  /// (0, 1]. Collective.
+  /// Throws std::invalid_argument (one line) if a stencil point lies in no
+  /// band cell (the band is too thin) or s is outside (0, 1]. Collective.
   MtfBoundary(const dolfinx::fem::FunctionSpace& V,
               const dolfinx::mesh::MeshTags<std::int32_t>& facets,
               const std::vector<int>& boundary_tags,
@@ -90,9 +93,12 @@ private:
   int _dim;
   std::vector<Node> _nodes; ///< owned boundary nodes
   std::vector<PetscInt> _rows;
-  /// Per node, 2N + 1 positions of its stencil nodes in the gathered
-  /// buffers (node-major, the components following).
-  std::vector<std::int32_t> _stencil;
+  /// The stencil's values: per node and k = 0..2N (CSR by _offsets), the
+  /// positions in the gathered buffers (the components following) and the
+  /// weights that interpolate u at x_k (one node of weight 1 where x_k is
+  /// a node).
+  std::vector<std::int32_t> _offsets, _positions;
+  std::vector<double> _weights;
   std::array<std::int64_t, 2> _counts{};
   VecScatter _scatter = nullptr;
   Vec _now = nullptr, _prev = nullptr;
