@@ -192,7 +192,7 @@ boundary_nodes(const dolfinx::fem::FunctionSpace& V,
 }
 
 /// The band's cells of every rank (their vertices and the global blocks of
-/// their nodes) in a grid of boxes of the band's cell size, and the
+/// their nodes) in a grid of boxes of the node spacing, and the
 /// weights that interpolate the field at a point from its cell's nodes
 /// (the element's basis there: at a node, that node alone).
 class BandCells
