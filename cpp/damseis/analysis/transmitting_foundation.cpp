@@ -125,12 +125,13 @@ TransmittingFoundation::TransmittingFoundation(
     _band_mass = std::move(mass);
     _prescribed = std::make_shared<TiedPrescribed>(_mtf, tie);
   }
-  _omega = dynamics::highest_explicit_frequency(
-      _K.mat(), _K_implicit.mat(), _band_mass.vec(), _prescribed->rows());
-  // The band's own stiffness damping: band_damping of critical at its
-  // highest frequency.
-  _b_explicit = _omega > 0.0 ? 2.0 * t.band_damping / _omega : 0.0;
+  if (t.band_explicit)
   {
+    _omega = dynamics::highest_explicit_frequency(
+        _K.mat(), _K_implicit.mat(), _band_mass.vec(), _prescribed->rows());
+    // The band's own stiffness damping: band_damping of critical at its
+    // highest frequency.
+    _b_explicit = _omega > 0.0 ? 2.0 * t.band_damping / _omega : 0.0;
     Mat K_E = linalg::duplicate_matrix(_K.mat(), MAT_COPY_VALUES);
     MatAXPY(K_E, -1.0, _K_implicit.mat(), SUBSET_NONZERO_PATTERN);
     _K_explicit = Matrix(K_E, false);

@@ -47,7 +47,8 @@ public:
   /// The partition for the nonlinear engine, whose state is total: the
   /// formula acts on the motion from the static displacement `u_static`
   /// (copied; the boundary's nodes are fixed in the static stage), the
-  /// explicit elements' stiffness K - K_I. Call check_time_step() first.
+  /// explicit elements' stiffness K - K_I (null with the band implicit).
+  /// Call check_time_step() first.
   dynamics::Partition partition(Vec u_static);
   /// The mass of the partition: consistent on the implicit elements,
   /// lumped on the band.

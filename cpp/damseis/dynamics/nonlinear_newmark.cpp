@@ -395,7 +395,8 @@ const linalg::DirectSolver& NonlinearNewmark::initial_solver(int level,
   {
     // a0 M + a1 (a_M M + b_K K_I) + K0 - K_E, the prescribed rows and
     // columns identity (alpha = 0).
-    MatAXPY(J0, -1.0, _partition.K_explicit, SUBSET_NONZERO_PATTERN);
+    if (_partition.K_explicit)
+      MatAXPY(J0, -1.0, _partition.K_explicit, SUBSET_NONZERO_PATTERN);
     MatAXPY(J0, a1 * _damping.b_stiffness, _partition.K_implicit,
             SUBSET_NONZERO_PATTERN);
   }
@@ -438,9 +439,8 @@ void NonlinearNewmark::set_partition(Partition partition)
     throw std::invalid_argument("the implicit-explicit partition is "
                                 "Newmark's average acceleration: HHT alpha "
                                 "must be 0");
-  if (!partition.K_implicit || !partition.K_explicit)
-    throw std::invalid_argument("a partition needs K_implicit and "
-                                "K_explicit");
+  if (!partition.K_implicit)
+    throw std::invalid_argument("a partition needs K_implicit");
   _partition = std::move(partition);
   const std::size_t n =
       _partition.prescribed ? _partition.prescribed->rows().size() : 0;

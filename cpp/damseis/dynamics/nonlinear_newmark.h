@@ -166,7 +166,8 @@ struct Partition
 {
   /// The implicit elements' stiffness (zero rows at explicit-only nodes).
   Mat K_implicit = nullptr;
-  /// The explicit elements' stiffness, part of f_int (linear there).
+  /// The explicit elements' stiffness, part of f_int (linear there); null
+  /// without explicit elements (the band implicit: K_implicit is K).
   Mat K_explicit = nullptr;
   std::shared_ptr<PrescribedDisplacement> prescribed;
   /// b_E [s]: the explicit elements' stiffness-proportional damping
