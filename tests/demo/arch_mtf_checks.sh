@@ -27,9 +27,14 @@
 #    the right-hand side on each rank's rows); HTC elastic (the Newton
 #    integrator's partition without explicit elements) gives the linear
 #    engine's to 1e-4 of its peak (as check 3).
-# 6. Bad input exits 2 with one line before any work: a U canyon, order
-#    2 on P2, a band reaching the rims, contact joints in the linear
-#    engine, HHT alpha.
+# 6. A U canyon (12 fillet segments a side): the band's columns under
+#    every wall segment are conforming (check 1's count), and contact
+#    joints with unbreakable bonds on it under HHT alpha = -0.1 (the band
+#    implicit, the nonlinear engine) equal the bonded joints to 1e-4 of
+#    the crest's seismic peak (as check 4), 2 ranks serial to 1e-8.
+# 7. Bad input exits 2 with one line before any work: order 2 on P2, a
+#    band reaching the rims, contact joints in the linear engine, HHT
+#    alpha with the band explicit or in the linear engine.
 # Usage: arch_mtf_checks.sh ARCH_DAM PYTHON MPIEXEC
 set -u
 exe=$1 python=$2 mpiexec=$3
@@ -60,6 +65,15 @@ implicit=("${common[@]}" --set foundation.band_integration=implicit
 "$mpiexec" -n 2 "$exe" --out "$work/implicit_mpi" "${implicit[@]}" >/dev/null
 "$exe" --out "$work/implicit_htc" "${implicit[@]}" --set material.model=elastic \
   >/dev/null
+ucanyon=("${implicit[@]}" --set canyon.shape=u --set time.hht_alpha=-0.1
+         --set material.model=elastic)
+"$exe" --out "$work/u_bonded" "${ucanyon[@]}" >/dev/null
+ucontact=("${ucanyon[@]}" --set joints.model=contact
+          --set "joints.tensile_strength=[1e8, 1e8, 1e8]"
+          --set "joints.cohesion=[1e8, 1e8, 1e8]")
+"$exe" --out "$work/u_contact" "${ucontact[@]}" >/dev/null 2>&1
+"$mpiexec" -n 2 "$exe" --out "$work/u_contact_mpi" "${ucontact[@]}" \
+  >/dev/null 2>&1
 "$exe" --out "$work/contact" "${contact[@]}" >/dev/null 2>&1
 "$mpiexec" -n 2 "$exe" --out "$work/contact_mpi" "${contact[@]}" >/dev/null 2>&1
 "$python" - "$work" <<'PY'
@@ -82,17 +96,21 @@ print(f"band: {m['boundary_nodes']} boundary nodes ({m['bottom_nodes']} on "
 # the faces' quadrangles were not the tetrahedra's, and 1109 of 1340 nodes
 # were found).
 import h5py
-x = h5py.File(f"{w}/serial/fields.h5", "r")["/mesh/geometry"][:]
-lo, hi = x.min(axis=0), x.max(axis=0)
-tol = 1e-6 * (hi - lo).max()
-bottom = np.abs(x[:, 2] - lo[2]) < tol
-faces = bottom.copy()
-for k in (0, 1):
-    faces |= (np.abs(x[:, k] - lo[k]) < tol) | (np.abs(x[:, k] - hi[k]) < tol)
-print(f"mesh nodes on the block's five faces {faces.sum()} ({bottom.sum()} on "
-      f"the bottom)")
-assert m["boundary_nodes"] == faces.sum(), (m["boundary_nodes"], faces.sum())
-assert m["bottom_nodes"] == bottom.sum(), (m["bottom_nodes"], bottom.sum())
+def conforming(name):
+    m = json.load(open(f"{w}/{name}/summary.json"))["foundation"]["mtf"]
+    x = h5py.File(f"{w}/{name}/fields.h5", "r")["/mesh/geometry"][:]
+    lo, hi = x.min(axis=0), x.max(axis=0)
+    tol = 1e-6 * (hi - lo).max()
+    bottom = np.abs(x[:, 2] - lo[2]) < tol
+    faces = bottom.copy()
+    for k in (0, 1):
+        faces |= (np.abs(x[:, k] - lo[k]) < tol) | (np.abs(x[:, k] - hi[k]) < tol)
+    print(f"{name}: mesh nodes on the block's five faces {faces.sum()} "
+          f"({bottom.sum()} on the bottom), boundary nodes {m['boundary_nodes']}")
+    assert m["boundary_nodes"] == faces.sum(), (m["boundary_nodes"], faces.sum())
+    assert m["bottom_nodes"] == bottom.sum(), (m["bottom_nodes"], bottom.sum())
+conforming("serial")
+conforming("u_bonded")
 a, c = crest("serial", seismic), crest("elastic", seismic)
 peak = np.abs(a).max()
 d_mpi = np.abs(a - crest("mpi", seismic)).max() / peak
@@ -111,6 +129,16 @@ print(f"contact joints with unbreakable bonds against bonded joints "
       f"{d_contact:.1e}; 2 ranks against serial {d_contact_mpi:.1e}")
 assert d_contact < 1e-4, d_contact
 assert d_contact_mpi < 1e-8, d_contact_mpi
+u = crest("u_bonded", seismic)
+d_u = np.abs(crest("u_contact", seismic) - u).max() / np.abs(u).max()
+d_u_mpi = np.abs(crest("u_contact", seismic) -
+                 crest("u_contact_mpi", seismic)).max() / np.abs(u).max()
+print(f"U canyon, HHT -0.1, band implicit: crest's seismic peak "
+      f"{np.abs(u).max():.3e} m; contact with unbreakable bonds against "
+      f"bonded {d_u:.1e}; 2 ranks against serial {d_u_mpi:.1e}")
+assert np.abs(u).max() > 1e-5
+assert d_u < 1e-4, d_u
+assert d_u_mpi < 1e-8, d_u_mpi
 i = crest("implicit", seismic)
 d_implicit = np.abs(i - crest("implicit_mpi", seismic)).max() / np.abs(i).max()
 print(f"implicit band, dt 5 ms: crest's seismic peak {np.abs(i).max():.3e} m "
@@ -125,15 +153,16 @@ assert d_engine < 1e-4, d_engine
 PY
 set +e
 
-expect mtf_u_canyon 'canyon\.shape = "v"' "${mtf[@]}" --set canyon.shape=u \
-  --set canyon.u_radius=20
 expect mtf_order_two_on_p2 'foundation\.mtf_order.*mesh\.order = 1' "${mtf[@]}" \
   --set mesh.order=2
 expect mtf_band_too_thick 'foundation\.band_size.*reach' "${mtf[@]}" \
   --set foundation.band_layers=6
 expect mtf_contact_linear 'foundation\.boundary.*contact joints in the nonlinear engine.*material\.model = "elastic"' \
   "${mtf[@]}" --set joints.model=contact
-expect mtf_hht 'time\.hht_alpha.*must be 0' "${mtf[@]}" --set time.hht_alpha=-0.1
+expect mtf_hht 'time\.hht_alpha.*must be 0.*explicit band' "${mtf[@]}" \
+  --set time.hht_alpha=-0.1
+expect mtf_hht_linear 'time\.hht_alpha.*linear engine.*material\.model = "elastic"' \
+  "${mtf[@]}" --set time.hht_alpha=-0.1 --set foundation.band_integration=implicit
 expect mtf_band_too_thin 'foundation\.band_layers.*at least 4 layers' \
   "${mtf[@]}" --set foundation.band_layers=3
 [ "$failures" -eq 0 ]

@@ -46,8 +46,8 @@ input::Schema arch_dam_schema()
            "(rock.rho) and a viscous-spring boundary on its far faces and "
            "bottom, the ground motion as the outcrop motion of vertically "
            "incident waves; mtf: the same with Liao's multi-transmitting "
-           "boundary on a structured band of explicit elements "
-           "(foundation.band_*, foundation.mtf_*; a V canyon)",
+           "boundary on a structured band of elements "
+           "(foundation.band_*, foundation.mtf_*)",
            {"fixed", "viscous_spring", "mtf"});
   add_transmitting_keys(s, "bottom, sides, upstream and downstream faces",
                         "40.0");
@@ -196,20 +196,14 @@ void read_table1_study(const input::Case& c, ArchDamConfig& a, double h)
 /// foundation.boundary = "mtf": the band in the mesh (around the block's
 /// far faces, clear of the valley rims and of the dam), the formula's
 /// order and drift, and the time step against s = c_p dt / dx <= 1 and
-/// HHT alpha = 0 (the explicit band's stable step is checked when the run
-/// has its modes).
+/// HHT alpha (check_transmitting_step; the explicit band's stable step is
+/// checked when the run has its modes).
 void read_transmitting(const input::Case& c, ArchDamConfig& a,
                        const geometry::ArchDamGeometry& shape)
 {
   const bool active = a.boundary == FoundationBoundary::transmitting;
   if (active)
   {
-    if (shape.canyon_profile().size() != 2)
-      c.fail("foundation.boundary",
-             "mtf needs a canyon with straight walls (canyon.shape = \"v\"): "
-             "the band's pieces along the walls must be hexahedra",
-             "canyon.shape = \"v\", or foundation.boundary = "
-             "\"viscous_spring\"");
     if (a.joints == JointModel::contact &&
         a.concrete_model.kind == ConcreteModelKind::linear)
       c.fail("foundation.boundary",
@@ -241,8 +235,9 @@ void read_transmitting(const input::Case& c, ArchDamConfig& a,
     c.fail("foundation.band_size", problem.str(), fix.str());
   }
   const boundary::Rock rock{a.rock.E, a.rock.nu, a.rock_rho, false};
-  check_transmitting_step(c, a.seismic.scheme.alpha, rock, a.seismic.scheme.dt,
-                          t.spacing);
+  check_transmitting_step(c, a.seismic.scheme.alpha, t,
+                          a.concrete_model.kind != ConcreteModelKind::linear,
+                          rock, a.seismic.scheme.dt);
   if (c.boolean("study.foundation"))
     c.fail("foundation.boundary",
            "mtf is not yet available in study.foundation (its ratios change "

@@ -196,9 +196,10 @@ void check_transmitting_step(const input::Case& c, const GravityDamConfig& g,
     return;
   const boundary::Rock rock{largest_E, g.rock.nu, g.rock_rho,
                             g.plane == fem::PlaneMode::plane_stress};
-  analysis::check_transmitting_step(c, g.seismic.scheme.alpha, rock,
-                                    g.seismic.scheme.dt,
-                                    g.transmitting.spacing);
+  analysis::check_transmitting_step(c, g.seismic.scheme.alpha, g.transmitting,
+                                    g.concrete_model.kind !=
+                                        ConcreteModelKind::linear,
+                                    rock, g.seismic.scheme.dt);
 }
 
 /// The foundation block's keys: size, mesh, rock, split (the boundary

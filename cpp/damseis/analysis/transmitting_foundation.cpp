@@ -221,10 +221,10 @@ void TransmittingFoundation::check_time_step(dynamics::RayleighDamping damping,
          "foundation.band_size)";
     throw input::InputError(m.str());
   }
-  if (scheme.alpha != 0.0)
+  if (scheme.alpha != 0.0 && _wave.mtf->band_explicit)
     throw input::InputError("time.hht_alpha must be 0 with a multi-"
-                            "transmitting boundary (the partition is "
-                            "Newmark's average acceleration)");
+                            "transmitting boundary's explicit band (the "
+                            "partition is Newmark's average acceleration)");
 }
 
 std::unique_ptr<engine::Stepper>
@@ -233,6 +233,10 @@ TransmittingFoundation::stepper(dynamics::RayleighDamping damping,
                                 linalg::Factorization factorization)
 {
   check_time_step(damping, scheme);
+  if (scheme.alpha != 0.0)
+    throw input::InputError("time.hht_alpha must be 0 with a multi-"
+                            "transmitting boundary in the linear engine "
+                            "(PartitionedNewmark is average acceleration)");
   return std::make_unique<engine::PartitionedStepper>(
       _M.mat(), _K.mat(), _K_implicit.mat(), damping, scheme.dt, factorization,
       _prescribed, _b_explicit);

@@ -80,14 +80,24 @@ Transmitting read_transmitting_keys(const input::Case& c, int mesh_order,
 }
 
 void check_transmitting_step(const input::Case& c, double hht_alpha,
-                             const boundary::Rock& rock, double dt,
-                             double spacing)
+                             const Transmitting& t, bool nonlinear_engine,
+                             const boundary::Rock& rock, double dt)
 {
-  if (hht_alpha != 0.0)
+  if (hht_alpha != 0.0 && t.band_explicit)
     c.fail("time.hht_alpha",
-           "must be 0 with a multi-transmitting boundary (the implicit-"
-           "explicit partition is Newmark's average acceleration)",
-           "time.hht_alpha = 0");
+           "must be 0 with a multi-transmitting boundary's explicit band "
+           "(the implicit-explicit partition is Newmark's average "
+           "acceleration)",
+           "time.hht_alpha = 0, or foundation.band_integration = "
+           "\"implicit\"");
+  if (hht_alpha != 0.0 && !nonlinear_engine)
+    c.fail("time.hht_alpha",
+           "must be 0 with a multi-transmitting boundary in the linear "
+           "engine (its partition is Newmark's average acceleration)",
+           "time.hht_alpha = 0, or material.model = \"elastic\" (the same "
+           "elastic dam in the nonlinear engine, which takes HHT alpha with "
+           "the band implicit)");
+  const double spacing = t.spacing;
   const double courant = rock.cp() * dt / spacing;
   if (courant > 1.0)
   {

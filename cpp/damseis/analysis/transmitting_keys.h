@@ -33,10 +33,11 @@ struct BandKeys
 Transmitting read_transmitting_keys(const input::Case& c, int mesh_order,
                                     bool active, BandKeys& band);
 
-/// The time step of a run on the boundary: time.hht_alpha = 0 (the
-/// implicit-explicit partition is Newmark's average acceleration) and
-/// s = c_p dt / dx <= 1, c_p of `rock`.
+/// The time step of a run on the boundary: s = c_p dt / dx <= 1, c_p of
+/// `rock`, and time.hht_alpha = 0 unless the band is implicit and the run
+/// is in the nonlinear engine (`nonlinear_engine`; the linear engine's
+/// partition and an explicit band are Newmark's average acceleration).
 void check_transmitting_step(const input::Case& c, double hht_alpha,
-                             const boundary::Rock& rock, double dt,
-                             double spacing);
+                             const Transmitting& t, bool nonlinear_engine,
+                             const boundary::Rock& rock, double dt);
 } // namespace damseis::analysis

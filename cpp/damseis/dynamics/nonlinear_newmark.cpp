@@ -393,11 +393,12 @@ const linalg::DirectSolver& NonlinearNewmark::initial_solver(int level,
   Mat J0 = linalg::duplicate_matrix(_K0, MAT_COPY_VALUES);
   if (_partition.K_implicit)
   {
-    // a0 M + a1 (a_M M + b_K K_I) + K0 - K_E, the prescribed rows and
-    // columns identity (alpha = 0).
+    // a0 M + w (a1 (a_M M + b_K K_I) + K0 - K_E), the prescribed rows
+    // and columns identity (w = 1 with explicit elements).
     if (_partition.K_explicit)
       MatAXPY(J0, -1.0, _partition.K_explicit, SUBSET_NONZERO_PATTERN);
-    MatAXPY(J0, a1 * _damping.b_stiffness, _partition.K_implicit,
+    MatScale(J0, w);
+    MatAXPY(J0, w * a1 * _damping.b_stiffness, _partition.K_implicit,
             SUBSET_NONZERO_PATTERN);
   }
   else
@@ -435,10 +436,10 @@ void NonlinearNewmark::set_constraint(NewtonConstraint* constraint)
 
 void NonlinearNewmark::set_partition(Partition partition)
 {
-  if (_scheme.alpha != 0.0)
+  if (_scheme.alpha != 0.0 && partition.K_explicit)
     throw std::invalid_argument("the implicit-explicit partition is "
                                 "Newmark's average acceleration: HHT alpha "
-                                "must be 0");
+                                "must be 0 with explicit elements");
   if (!partition.K_implicit)
     throw std::invalid_argument("a partition needs K_implicit");
   _partition = std::move(partition);

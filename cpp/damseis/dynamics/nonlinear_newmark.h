@@ -160,8 +160,11 @@ StepReport solve_static(NonlinearSystem& system, Mat K0, Vec F_from, Vec F_to,
 /// b_K K_I (the implicit elements alone); the prescribed unknowns (the
 /// boundary's nodes, explicit alone) take their displacements from
 /// `prescribed` once per step (linearly in time within a cut step), rows
-/// and columns of the effective matrix identity. Average acceleration
-/// only (HHT alpha = 0).
+/// and columns of the effective matrix identity. With explicit elements
+/// average acceleration only (HHT alpha = 0); without them (the band
+/// implicit: only the prescribed unknowns) any HHT alpha, the prescribed
+/// unknowns' velocities and accelerations by Newmark's relations from
+/// their displacements.
 struct Partition
 {
   /// The implicit elements' stiffness (zero rows at explicit-only nodes).
@@ -200,7 +203,7 @@ public:
   void set_constraint(NewtonConstraint* constraint);
   /// The partition of a transmitting boundary (before set_state; the
   /// matrices must outlive the integrator). Throws std::invalid_argument
-  /// with HHT alpha != 0 or with a constraint.
+  /// with HHT alpha != 0 and explicit elements.
   void set_partition(Partition partition);
   /// The displacement one step back and the step number n of the state
   /// (the prescribed displacements' history; set_state sets u and 0).

@@ -9,6 +9,29 @@
 
 namespace damseis::geometry
 {
+std::vector<double> band_x_cuts(const ArchDamGeometry& g, const ModelBox& e,
+                                double w)
+{
+  const auto& p = g.canyon_profile();
+  const double H = g.height(), tol = 1e-9 * H;
+  std::vector<double> x = {e.x0, e.x0 + w,    e.x1 - w,
+                           e.x1, g.x_left(H), g.x_right(H)};
+  for (int wall : {1, 2})
+    for (std::size_t i = 0; i + 1 < p.size() && p[i][0] < H - tol; ++i)
+    {
+      // The floor's edge, and every corner where the wall changes slope.
+      const bool corner =
+          i == 0 ||
+          std::abs((p[i + 1][wall] - p[i][wall]) / (p[i + 1][0] - p[i][0]) -
+                   (p[i][wall] - p[i - 1][wall]) / (p[i][0] - p[i - 1][0])) >
+              1e-9;
+      if (corner)
+        x.push_back(p[i][wall]);
+    }
+  std::sort(x.begin(), x.end());
+  return x;
+}
+
 gmsh::vectorpair split_band(const ArchDamGeometry& g, const ModelBox& e,
                             const gmsh::vectorpair& rock, double w)
 {
@@ -48,10 +71,11 @@ gmsh::vectorpair split_band(const ArchDamGeometry& g, const ModelBox& e,
       lines.push_back(occ::addLine(pts[k], pts[(k + 1) % 4]));
     return std::pair{2, occ::addPlaneSurface({occ::addCurveLoop(lines)})};
   };
-  gmsh::vectorpair tools = {plane(0, e.x0 + w),      plane(0, e.x1 - w),
-                            plane(0, g.x_left(0.0)), plane(0, g.x_right(0.0)),
-                            plane(1, e.y0 + w),      plane(1, e.y1 - w),
-                            plane(2, e.z0 + w),      plane(2, 0.0)};
+  gmsh::vectorpair tools = {plane(1, e.y0 + w), plane(1, e.y1 - w),
+                            plane(2, e.z0 + w)};
+  const std::vector<double> xs = band_x_cuts(g, e, w);
+  for (std::size_t i = 1; i + 1 < xs.size(); ++i)
+    tools.push_back(plane(0, xs[i]));
   const gmsh::vectorpair pieces = cut_by_surfaces(band, tools);
   gmsh::vectorpair all = core;
   all.insert(all.end(), pieces.begin(), pieces.end());
@@ -92,8 +116,8 @@ std::vector<int> ordered(std::vector<Corner> c, int u, int v)
 }
 
 /// A band face's corners in the global frame: its in-plane axes are the
-/// two global axes other than its normal's (z for horizontal faces, else
-/// the larger of the normal's x and y).
+/// two global axes other than its normal's (z for faces that are not
+/// vertical, else the larger of the normal's x and y).
 std::vector<int> surface_corners(int f)
 {
   const std::vector<Corner> c = corners_of(2, f);
@@ -109,19 +133,13 @@ std::vector<int> surface_corners(int f)
   }
   n = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
        a[0] * b[1] - a[1] * b[0]};
-  // Horizontal faces (bottoms and tops) have the normal z; the others are
-  // the pieces' sides, a wall's too (its normal may lean towards z): x or
-  // y, as the volumes' frame has them.
-  double z0 = c[0].second[2], z1 = z0;
-  for (const auto& corner : c)
-  {
-    z0 = std::min(z0, corner.second[2]);
-    z1 = std::max(z1, corner.second[2]);
-  }
-  const double size = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]) +
-                      std::sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
-  const int normal =
-      z1 - z0 < 1e-9 * size ? 2 : (std::abs(n[0]) > std::abs(n[1]) ? 0 : 1);
+  // The pieces' bottoms and tops (horizontal, or a wall's segment above a
+  // column) in the volumes' frame of their bottoms and tops: x, y; their
+  // sides (vertical) in their planes: y, z or x, z.
+  const double size = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  const int normal = std::abs(n[2]) > 1e-9 * size
+                         ? 2
+                         : (std::abs(n[0]) > std::abs(n[1]) ? 0 : 1);
   const int u = normal == 0 ? 1 : 0, v = normal == 2 ? 1 : 2;
   return ordered(c, u, v);
 }
@@ -149,25 +167,19 @@ std::vector<int> volume_corners(int vol)
 
 /// The band's volumes meshed as structured (transfinite) tetrahedra: each
 /// curve gets the node count of its interval, so that opposite edges of
-/// every piece match: along y and z by its extent (the band's layers of
-/// `h`), along x by the interval between the band's and the floor's
-/// planes in which it lies. Beside the walls the pieces are trapezoids
-/// (their edges at the floor level longer than at the crest, where the
-/// walls reach the rims): their count is the crest edge's, so that no
-/// cell is narrower than h there (the explicit band's stable step).
+/// every piece match: along x (the pieces' bottoms and tops, the walls'
+/// edges) by the interval between the cuts in which it lies, along y by
+/// its length (the band's layers of `h`), along z by its length in the
+/// bottom band and above it by the tallest column's height (every
+/// vertical edge there runs from the bottom band to the rock's surface).
 void structure_band(const ArchDamGeometry& g, const ModelBox& e, double w,
                     double h, const std::vector<int>& band_volumes)
 {
   const double H = g.height(), tol = 1e-6 * H;
-  const std::vector<double> xb = {e.x0,           e.x0 + w, g.x_left(0.0),
-                                  g.x_right(0.0), e.x1 - w, e.x1};
+  const std::vector<double> xb = band_x_cuts(g, e, w);
   auto segments = [&](double length)
   { return std::max(1, static_cast<int>(std::lround(length / h))); };
-  // Per x interval, the length its count is made for (beside the walls:
-  // the crest edge, from the band to the rim).
-  const std::vector<double> x_length = {w, g.x_left(H) - (e.x0 + w),
-                                        g.x_right(0.0) - g.x_left(0.0),
-                                        (e.x1 - w) - g.x_right(H), w};
+  const int columns = segments(H - (e.z0 + w));
   std::set<int> curves, surfaces;
   for (int v : band_volumes)
   {
@@ -176,8 +188,7 @@ void structure_band(const ArchDamGeometry& g, const ModelBox& e, double w,
     if (faces.size() != 6)
       throw std::runtime_error(
           "arch dam: a piece of the transmitting boundary's band has " +
-          std::to_string(faces.size()) +
-          " faces (a hexahedron has 6); is the canyon V-shaped?");
+          std::to_string(faces.size()) + " faces (a hexahedron has 6)");
     for (const auto& [d, f] : faces)
     {
       surfaces.insert(std::abs(f));
@@ -192,20 +203,20 @@ void structure_band(const ArchDamGeometry& g, const ModelBox& e, double w,
     double x0, y0, z0, x1, y1, z1;
     gmsh::model::getBoundingBox(1, c, x0, y0, z0, x1, y1, z1);
     int n = 1;
-    if (z1 - z0 > tol) // vertical, or along a wall
-      n = segments(z1 - z0);
-    else if (y1 - y0 > tol)
-      n = segments(y1 - y0);
-    else
+    if (x1 - x0 > tol) // along x, or along a wall
     {
       const double xm = 0.5 * (x0 + x1);
       for (std::size_t i = 0; i + 1 < xb.size(); ++i)
         if (xm >= xb[i] - tol && xm <= xb[i + 1] + tol)
         {
-          n = segments(x_length[i]);
+          n = segments(xb[i + 1] - xb[i]);
           break;
         }
     }
+    else if (y1 - y0 > tol)
+      n = segments(y1 - y0);
+    else // vertical
+      n = z1 <= e.z0 + w + tol ? segments(z1 - z0) : columns;
     gmsh::model::mesh::setTransfiniteCurve(c, n + 1);
   }
   // The corners in one global frame, so that gmsh's split of every piece

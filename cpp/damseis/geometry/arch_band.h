@@ -3,9 +3,10 @@
 // the block's bottom, sides, upstream and downstream faces, cut into
 // topological hexahedra and meshed as transfinite (structured)
 // tetrahedra, so that every boundary node has the nodes of Liao's formula
-// at uniform spacing along its normal (fem/MtfBoundary). The canyon's
-// walls must be straight (a V canyon): the pieces beside them are
-// trapezoids bounded by one wall face. gmsh (OCC) on rank 0.
+// at uniform spacing along its normal (fem/MtfBoundary). Vertical planes
+// at the canyon's corners (the floor's edges, where a wall changes slope,
+// the rims) cut the band into columns, each under one face of the ground:
+// the floor, one wall segment or the plateau. gmsh (OCC) on rank 0.
 #pragma once
 
 #include "arch_dam.h"
@@ -14,10 +15,15 @@
 
 namespace damseis::geometry
 {
+/// The x of the band's vertical cuts, ascending: the block's faces, the
+/// band's inner faces, the rims, the floor's edges and the walls' corners.
+std::vector<double> band_x_cuts(const ArchDamGeometry& g, const ModelBox& e,
+                                double w);
+
 /// The rock block `rock` cut into its core (inside the band) and the
 /// band's pieces: the band (the rock within `w` of the block's bottom,
 /// sides, upstream and downstream faces) fragmented by the planes of the
-/// band's inner faces, of the canyon floor's edges and of the floor level.
+/// band's inner faces and by vertical planes at band_x_cuts.
 /// Returns the core first, then the pieces (OCC, synchronised).
 gmsh::vectorpair split_band(const ArchDamGeometry& g, const ModelBox& e,
                             const gmsh::vectorpair& rock, double w);
