@@ -41,12 +41,16 @@ nlohmann::json analyse(MPI_Comm comm, const ArchDamConfig& config,
 }
 
 // A foundation study (study.foundation): the analysis above on massless
-// rock and on rock with mass and a viscous-spring boundary, for each ratio
+// rock and on rock with mass and a viscous-spring boundary (and Liao's
+// boundary if the case has foundation.boundary = "mtf"), for each ratio
 // E_f / E_d (the paper's Figs. 22-27).
 nlohmann::json foundation_study(MPI_Comm comm, const ArchDamConfig& config,
                                 const std::filesystem::path& out_dir,
                                 const std::string& case_text)
 {
+  std::vector<FoundationBoundary> models = {FoundationBoundary::viscous_spring};
+  if (config.boundary == FoundationBoundary::transmitting)
+    models.push_back(FoundationBoundary::transmitting);
   return run_foundation_study(
       comm, config.foundation_ratios, out_dir, "foundation_study",
       [&](double ratio, FoundationBoundary boundary,
@@ -59,7 +63,8 @@ nlohmann::json foundation_study(MPI_Comm comm, const ArchDamConfig& config,
         if (!damping_hz.empty())
           c.seismic.damping_frequencies_hz = damping_hz;
         return analyse(comm, c, dir, case_text);
-      });
+      },
+      {}, models);
 }
 
 // The paper's section I study (study.table1): the analysis above with the
