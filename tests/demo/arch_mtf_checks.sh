@@ -35,7 +35,7 @@
 # 7. Bad input exits 2 with one line before any work: order 2 on P2, a
 #    band reaching the rims, contact joints in the linear engine, HHT
 #    alpha with the band explicit or in the linear engine, study.foundation
-#    whose stiffest rock breaks s <= 1.
+#    whose stiffest rock breaks s <= 1, a vertical wall segment.
 # Usage: arch_mtf_checks.sh ARCH_DAM PYTHON MPIEXEC
 set -u
 exe=$1 python=$2 mpiexec=$3
@@ -166,6 +166,10 @@ expect mtf_hht_linear 'time\.hht_alpha.*linear engine.*material\.model = "elasti
   "${mtf[@]}" --set time.hht_alpha=-0.1 --set foundation.band_integration=implicit
 expect mtf_study_courant 'time\.dt.*s = c_p dt / dx = 1\.[0-9]*.*must be at most 1' \
   "${mtf[@]}" --set study.foundation=true --set 'study.foundation_ratios=[0.5, 20.0]'
+expect mtf_vertical_wall 'canyon\.x_left.*vertical or overhanging' "${mtf[@]}" \
+  --set canyon.shape=points --set 'canyon.z=[0.0, 50.0, 102.0]' \
+  --set 'canyon.x_left=[-12.0, -12.0, -130.0]' \
+  --set 'canyon.x_right=[12.0, 60.0, 130.0]'
 expect mtf_band_too_thin 'foundation\.band_layers.*at least 4 layers' \
   "${mtf[@]}" --set foundation.band_layers=3
 [ "$failures" -eq 0 ]

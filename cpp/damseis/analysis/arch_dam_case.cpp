@@ -206,6 +206,17 @@ void read_transmitting(const input::Case& c, ArchDamConfig& a,
   const bool active = a.boundary == FoundationBoundary::transmitting;
   if (active)
   {
+    // The band's columns stand under the walls' segments (geometry/
+    // arch_band): a vertical segment would leave a column with two faces
+    // on one side.
+    const auto& p = shape.canyon_profile();
+    for (std::size_t i = 0; i + 1 < p.size(); ++i)
+      if (!(p[i + 1][1] < p[i][1] && p[i + 1][2] > p[i][2]))
+        c.fail("canyon.x_left",
+               "has a vertical or overhanging wall segment, which the "
+               "multi-transmitting boundary's band cannot follow",
+               "walls that widen with height (x_left decreasing, x_right "
+               "increasing), or foundation.boundary = \"viscous_spring\"");
     if (a.joints == JointModel::contact &&
         a.concrete_model.kind == ConcreteModelKind::linear)
       c.fail("foundation.boundary",
