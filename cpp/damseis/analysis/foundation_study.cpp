@@ -25,8 +25,8 @@ ModelName model_name(FoundationBoundary b)
             "boundary, vertically incident waves)"};
   case FoundationBoundary::transmitting:
     return {"mtf", "A'",
-            "dam-foundation interaction (rock with mass, multi-transmitting "
-            "boundary with an explicit band, vertically incident waves)"};
+            "dam-foundation interaction (rock with mass, Liao's multi-"
+            "transmitting boundary, vertically incident waves)"};
   default:
     return {"massless", "B", "massless foundation"};
   }

@@ -565,9 +565,11 @@ nlohmann::json wave_foundation_summary(const WaveFoundation& wave,
                       {"record_baseline_corrected", corrected}};
   if (wave.mtf)
   {
-    s["model"] = "mass, multi-transmitting boundary (Liao), explicit band "
-                 "(Hughes-Liu partition), " +
-                 f.description();
+    s["model"] =
+        std::string("mass, multi-transmitting boundary (Liao), ") +
+        (wave.mtf->band_explicit ? "explicit band (Hughes-Liu partition), "
+                                 : "implicit band, ") +
+        f.description();
     return s;
   }
   s["model"] = "mass, viscous-spring boundary, " + f.description();
