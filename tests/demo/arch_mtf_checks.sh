@@ -27,8 +27,8 @@
 #    the right-hand side on each rank's rows); HTC elastic (the Newton
 #    integrator's partition without explicit elements) gives the linear
 #    engine's to 1e-4 of its peak (as check 3).
-# 6. A U canyon (12 fillet segments a side): the band's columns under
-#    every wall segment are conforming (check 1's count), and contact
+# 6. A U canyon (12 fillet segments a side): the band, unstructured
+#    beside the walls, is conforming (check 1's count), and contact
 #    joints with unbreakable bonds on it under HHT alpha = -0.1 (the band
 #    implicit, the nonlinear engine) equal the bonded joints to 1e-4 of
 #    the crest's seismic peak (as check 4), 2 ranks serial to 1e-8.

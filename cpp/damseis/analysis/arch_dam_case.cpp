@@ -206,9 +206,8 @@ void read_transmitting(const input::Case& c, ArchDamConfig& a,
   const bool active = a.boundary == FoundationBoundary::transmitting;
   if (active)
   {
-    // The band's columns stand under the walls' segments (geometry/
-    // arch_band): a vertical segment would leave a column with two faces
-    // on one side.
+    // The band's vertical cuts at the floor's edges and the rims
+    // (geometry/arch_band) need walls that widen with height.
     const auto& p = shape.canyon_profile();
     for (std::size_t i = 0; i + 1 < p.size(); ++i)
       if (!(p[i + 1][1] < p[i][1] && p[i + 1][2] > p[i][2]))

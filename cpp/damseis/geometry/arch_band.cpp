@@ -12,24 +12,9 @@ namespace damseis::geometry
 std::vector<double> band_x_cuts(const ArchDamGeometry& g, const ModelBox& e,
                                 double w)
 {
-  const auto& p = g.canyon_profile();
-  const double H = g.height(), tol = 1e-9 * H;
-  std::vector<double> x = {e.x0, e.x0 + w,    e.x1 - w,
-                           e.x1, g.x_left(H), g.x_right(H)};
-  for (int wall : {1, 2})
-    for (std::size_t i = 0; i + 1 < p.size() && p[i][0] < H - tol; ++i)
-    {
-      // The floor's edge, and every corner where the wall changes slope.
-      const bool corner =
-          i == 0 ||
-          std::abs((p[i + 1][wall] - p[i][wall]) / (p[i + 1][0] - p[i][0]) -
-                   (p[i][wall] - p[i - 1][wall]) / (p[i][0] - p[i - 1][0])) >
-              1e-9;
-      if (corner)
-        x.push_back(p[i][wall]);
-    }
-  std::sort(x.begin(), x.end());
-  return x;
+  const double H = g.height();
+  return {e.x0,           e.x0 + w,     g.x_left(H), g.x_left(0.0),
+          g.x_right(0.0), g.x_right(H), e.x1 - w,    e.x1};
 }
 
 gmsh::vectorpair split_band(const ArchDamGeometry& g, const ModelBox& e,
@@ -167,11 +152,14 @@ std::vector<int> volume_corners(int vol)
 
 /// The band's volumes meshed as structured (transfinite) tetrahedra: each
 /// curve gets the node count of its interval, so that opposite edges of
-/// every piece match: along x (the pieces' bottoms and tops, the walls'
-/// edges) by the interval between the cuts in which it lies, along y by
-/// its length (the band's layers of `h`), along z by its length in the
-/// bottom band and above it by the tallest column's height (every
-/// vertical edge there runs from the bottom band to the rock's surface).
+/// every piece match: along x (the pieces' bottoms and tops, a wall's
+/// edge) by the interval between the cuts in which it lies, along y by its
+/// length (the band's layers of `h`), along z by its length in the bottom
+/// band and above it by the tallest piece's height (every vertical edge
+/// there runs from the bottom band to the rock's surface). A piece beside
+/// a wall of several segments (a U canyon) is not a hexahedron: gmsh
+/// meshes it unstructured against its neighbours' structured faces, and
+/// the formula's stencil points in it are interpolated (fem/MtfBoundary).
 void structure_band(const ArchDamGeometry& g, const ModelBox& e, double w,
                     double h, const std::vector<int>& band_volumes)
 {
@@ -181,14 +169,14 @@ void structure_band(const ArchDamGeometry& g, const ModelBox& e, double w,
   { return std::max(1, static_cast<int>(std::lround(length / h))); };
   const int columns = segments(H - (e.z0 + w));
   std::set<int> curves, surfaces;
+  std::vector<int> hexahedra;
   for (int v : band_volumes)
   {
     gmsh::vectorpair faces;
     gmsh::model::getBoundary({{3, v}}, faces, false, false, false);
-    if (faces.size() != 6)
-      throw std::runtime_error(
-          "arch dam: a piece of the transmitting boundary's band has " +
-          std::to_string(faces.size()) + " faces (a hexahedron has 6)");
+    if (faces.size() != 6 || corners_of(3, v).size() != 8)
+      continue; // beside a wall of several segments: unstructured
+    hexahedra.push_back(v);
     for (const auto& [d, f] : faces)
     {
       surfaces.insert(std::abs(f));
@@ -225,7 +213,7 @@ void structure_band(const ArchDamGeometry& g, const ModelBox& e, double w,
   // third of the faces did not (a non-conforming mesh).
   for (int f : surfaces)
     gmsh::model::mesh::setTransfiniteSurface(f, "Left", surface_corners(f));
-  for (int v : band_volumes)
+  for (int v : hexahedra)
     gmsh::model::mesh::setTransfiniteVolume(v, volume_corners(v));
 }
 

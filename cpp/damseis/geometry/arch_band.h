@@ -4,9 +4,12 @@
 // topological hexahedra and meshed as transfinite (structured)
 // tetrahedra, so that every boundary node has the nodes of Liao's formula
 // at uniform spacing along its normal (fem/MtfBoundary). Vertical planes
-// at the canyon's corners (the floor's edges, where a wall changes slope,
-// the rims) cut the band into columns, each under one face of the ground:
-// the floor, one wall segment or the plateau. gmsh (OCC) on rank 0.
+// at the rims and the canyon floor's edges cut the band where it crosses
+// the valley into columns under the floor, the walls and the plateau.
+// Beside a straight wall (a V canyon) the column is a hexahedron with the
+// wall as its top; beside a wall of several segments (a U canyon's
+// fillets) it is meshed unstructured and the stencil points in it are
+// interpolated. gmsh (OCC) on rank 0.
 #pragma once
 
 #include "arch_dam.h"
@@ -16,7 +19,7 @@
 namespace damseis::geometry
 {
 /// The x of the band's vertical cuts, ascending: the block's faces, the
-/// band's inner faces, the rims, the floor's edges and the walls' corners.
+/// band's inner faces, the rims and the floor's edges.
 std::vector<double> band_x_cuts(const ArchDamGeometry& g, const ModelBox& e,
                                 double w);
 
@@ -28,10 +31,10 @@ std::vector<double> band_x_cuts(const ArchDamGeometry& g, const ModelBox& e,
 gmsh::vectorpair split_band(const ArchDamGeometry& g, const ModelBox& e,
                             const gmsh::vectorpair& rock, double w);
 
-/// Sets the band's volumes (after the model's last boolean) to be meshed as
-/// structured tetrahedra of about `h`: the node count of each curve by its
-/// interval, opposite edges of every piece equal. Throws
-/// std::runtime_error if a piece is not a hexahedron.
+/// Sets the band's hexahedral volumes (after the model's last boolean) to
+/// be meshed as structured tetrahedra of about `h`: the node count of each
+/// curve by its interval, opposite edges of every piece equal; the other
+/// pieces (beside a wall of several segments) are left unstructured.
 void structure_band(const ArchDamGeometry& g, const ModelBox& e, double w,
                     double h, const std::vector<int>& band_volumes);
 /// The (volume, surface) pairs of the meshed band whose surface triangles

@@ -128,7 +128,8 @@ struct ArchMeshOptions
   /// A structured band of `band_layers` layers of cells of `band_size` [m]
   /// along the foundation block's bottom, sides and upstream and
   /// downstream faces (a transmitting boundary's band; 0: none), in
-  /// columns under each face of the ground (geometry/arch_band).
+  /// pieces, unstructured beside a wall of several segments
+  /// (geometry/arch_band).
   int band_layers = 0;
   double band_size = 0;
 };
