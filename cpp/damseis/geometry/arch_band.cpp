@@ -9,6 +9,10 @@
 
 namespace damseis::geometry
 {
+namespace
+{
+/// The x of the band's vertical cuts, ascending: the block's faces, the
+/// band's inner faces, the rims and the floor's edges.
 std::vector<double> band_x_cuts(const ArchDamGeometry& g, const ModelBox& e,
                                 double w)
 {
@@ -16,6 +20,7 @@ std::vector<double> band_x_cuts(const ArchDamGeometry& g, const ModelBox& e,
   return {e.x0,           e.x0 + w,     g.x_left(H), g.x_left(0.0),
           g.x_right(0.0), g.x_right(H), e.x1 - w,    e.x1};
 }
+} // namespace
 
 gmsh::vectorpair split_band(const ArchDamGeometry& g, const ModelBox& e,
                             const gmsh::vectorpair& rock, double w)

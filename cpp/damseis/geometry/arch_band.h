@@ -18,15 +18,11 @@
 
 namespace damseis::geometry
 {
-/// The x of the band's vertical cuts, ascending: the block's faces, the
-/// band's inner faces, the rims and the floor's edges.
-std::vector<double> band_x_cuts(const ArchDamGeometry& g, const ModelBox& e,
-                                double w);
-
 /// The rock block `rock` cut into its core (inside the band) and the
 /// band's pieces: the band (the rock within `w` of the block's bottom,
 /// sides, upstream and downstream faces) fragmented by the planes of the
-/// band's inner faces and by vertical planes at band_x_cuts.
+/// band's inner faces and by vertical planes at the rims and the floor's
+/// edges.
 /// Returns the core first, then the pieces (OCC, synchronised).
 gmsh::vectorpair split_band(const ArchDamGeometry& g, const ModelBox& e,
                             const gmsh::vectorpair& rock, double w);
