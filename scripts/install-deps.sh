@@ -4,7 +4,8 @@ set -euo pipefail
 packages=(
   cmake g++ make pkg-config
   libdolfinx-dev python3-ffcx libslepc-real-dev
-  libgmsh-dev libtomlplusplus-dev libcli11-dev libeigen3-dev
+  libgmsh-dev gmsh # gmsh: the example meshes' .geo files (tests remesh them)
+  libtomlplusplus-dev libcli11-dev libeigen3-dev
   nlohmann-json3-dev libgtest-dev googletest
   libmumps-dev liblapack-dev libblas-dev # joint contact: MUMPS Schur complement, LAPACK, BLAS
   libfftw3-dev # response spectra, filters and artificial records (motion/)

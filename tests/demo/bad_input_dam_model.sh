@@ -6,7 +6,9 @@
 # contact joints misconfigured (2D, no joints, friction count or sign,
 # restitution outside [0, 1], a keyed joint that is not a joint, contact
 # keys with bonded joints, with HTC concrete, an unknown dead-load option,
-# joint history points not in threes):
+# joint history points not in threes; the multi-transmitting boundary's
+# band empty, in the dam, unknown or too thin, its spacing, time step,
+# order on P2, massless rock, HHT alpha with the band explicit):
 # one line naming the file, the key and the fix,
 # exit code 2, nothing written.
 # Usage: bad_input_dam_model.sh DAM_MODEL SOURCE_DIR
@@ -60,6 +62,18 @@ expect dm_bond_paper 'joints\.tensile_strength: is given with joints\.formulatio
 expect dm_bond_bonded 'joints\.cohesion: is given while joints\.model = "bonded"' --case "$block" --set 'joints.cohesion=[1e5]'
 expect dm_gap_negative 'joints\.initial_gap=\[-0\.001\] is out of range; expected 0 <= initial_gap' --case "$block" --set joints.model=contact --set 'joints.initial_gap=[-0.001]'
 expect dm_gap_bonded_joint 'joints\.initial_gap: opens joint 1 \(joints\.side1 order\), which has a bond' --case "$block" --set joints.model=contact --set 'joints.initial_gap=[0.001]' --set 'joints.tensile_strength=[1e5]'
+# The multi-transmitting boundary (supports.transmitting) and its band.
+rock=$src/demos/dam_model/dam_on_rock_2d.toml
+expect dm_transmitting_and_fixed 'supports\.transmitting: is given with supports\.fixed' --case "$rock" --set 'supports.fixed=[boundary]'
+expect dm_band_empty 'dam_on_rock_2d\.toml: foundation\.band: is empty; expected the cell groups of the band' --case "$rock" --set 'foundation.band=[]'
+expect dm_band_dam 'foundation\.band: names "dam", a region of the dam' --case "$rock" --set 'foundation.band=[dam]'
+expect dm_band_unknown 'foundation\.band: names "nowhere", which is not a region' --case "$rock" --set 'foundation.band=[nowhere]'
+expect dm_band_too_thin 'foundation\.band: the foundation has no band for the multi-transmitting boundary at .*; expected band cells reaching 2N node spacings = 24 m' --case "$rock" --set foundation.mtf_spacing=6
+expect dm_band_spacing_zero 'foundation\.mtf_spacing: must be positive' --case "$rock" --set foundation.mtf_spacing=0
+expect dm_transmitting_dt 'time\.dt: is too large for the multi-transmitting boundary: s = c_p dt / dx = 1\.5.*or a larger foundation\.mtf_spacing' --case "$rock" --set time.dt=0.002
+expect dm_transmitting_p2_order2 'foundation\.mtf_order: 2 drifts away on P2 elements' --case "$rock" --set mesh.order=2
+expect dm_transmitting_massless_rock 'supports\.transmitting: needs rock with mass, and region "rock" is massless' --case "$rock" --set 'regions.rho=[2400, 0, 0]'
+expect dm_transmitting_hht 'time\.hht_alpha: must be 0 with a multi-transmitting boundary.s explicit band' --case "$rock" --set time.hht_alpha=-0.1
 
 if [ "$failures" -ne 0 ]; then
   echo "$failures bad-input checks failed"; exit 1

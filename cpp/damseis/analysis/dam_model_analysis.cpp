@@ -92,9 +92,13 @@ DamModel dam_model(MPI_Comm comm, const DamModelConfig& cfg)
   }
   m.fe = std::make_unique<fem::ElasticModel>(cfg.mesh->model, cfg.order,
                                              materials, cfg.plane);
-  // Fixed supports, or rock held by its viscous-spring boundary.
+  // Fixed supports, or rock held by its viscous-spring boundary, or by its
+  // multi-transmitting boundary (fixed for the static and modal stages; the
+  // time history prescribes it).
   std::vector<int> fixed;
   for (const auto& g : cfg.fixed)
+    fixed.push_back(facet_tag(cfg, g));
+  for (const auto& g : cfg.transmitting)
     fixed.push_back(facet_tag(cfg, g));
   if (!fixed.empty())
     m.fe->fix(fixed);
@@ -196,7 +200,9 @@ nlohmann::json dam_model_results(MPI_Comm comm, const DamModelConfig& cfg,
       (cfg.concrete.kind == ConcreteModelKind::linear
            ? std::string("user mesh, linear elastic")
            : "user mesh, HTC concrete (" + to_string(cfg.concrete.kind) + ")") +
-      (cfg.wave ? ", rock with mass and a viscous-spring boundary" : "");
+      (!cfg.wave       ? ""
+       : cfg.wave->mtf ? ", rock with mass and a multi-transmitting boundary"
+                       : ", rock with mass and a viscous-spring boundary");
   summary["mesh_file"] = cfg.mesh_file.string();
   nlohmann::json regions = nlohmann::json::array();
   for (const Region& r : cfg.regions)

@@ -1,5 +1,6 @@
 #include "dam_model_case.h"
 #include "joint_contact_keys.h"
+#include "transmitting_keys.h"
 #include <algorithm>
 #include <cmath>
 #include <damseis/geometry/mesh_checks.h>
@@ -302,6 +303,23 @@ input::Schema dam_model_schema()
                  "mass (every region but the dam, one homogeneous rock), "
                  "springs and dashpots on it, the ground motion as the "
                  "outcrop motion of vertically incident waves");
+  s.string_array(
+      "supports.transmitting", "[]", "-",
+      "instead of supports.fixed: the far boundary of rock with mass (as "
+      "supports.viscous_spring), Liao's multi-transmitting formula on its "
+      "nodes (foundation.mtf_*), its band foundation.band");
+  s.string_array(
+      "foundation.band", "[]", "-",
+      "supports.transmitting: the cell groups of the band along the "
+      "boundary, reaching 2N node spacings inward (the formula's stencil; "
+      "structured or not: the points between nodes are interpolated); the "
+      "explicit group of foundation.band_integration = \"explicit\"");
+  s.real("foundation.mtf_spacing", "-1", "m",
+         "supports.transmitting: the formula's node spacing dx along the "
+         "normals (bounds c_p dt / dx <= 1); -1: the mean edge length of "
+         "the boundary's facets / mesh.order")
+      .between(-1, 1000);
+  add_formula_keys(s);
   s.real("foundation.spring_normal", "-1", "-",
          "viscous-spring boundary: normal spring alpha_n G / R (> 0; -1: "
          "1 in 2D, 4/3 in 3D)")
@@ -609,6 +627,28 @@ void read_joint_contact(const input::Case& c, DamModelConfig& cfg)
   jc.ncp = read_ncp_settings(c);
 }
 
+/// Exactly one kind of support: fixed, viscous-spring or transmitting.
+void read_supports(const input::Case& c, const DamModelConfig& cfg)
+{
+  const std::pair<const char*, const std::vector<std::string>*> kinds[] = {
+      {"supports.fixed", &cfg.fixed},
+      {"supports.viscous_spring", &cfg.viscous_spring},
+      {"supports.transmitting", &cfg.transmitting}};
+  std::vector<const char*> given;
+  for (const auto& [key, groups] : kinds)
+    if (!groups->empty())
+      given.push_back(key);
+  const std::string expected =
+      "one of them: the facet groups where the model is fixed (the "
+      "foundation's far boundary, or the dam base), or those of a "
+      "viscous-spring or a multi-transmitting boundary: " +
+      name_list(cfg.mesh->groups, cfg.mesh->tdim - 1);
+  if (given.empty())
+    c.fail("supports.fixed", "is empty", expected);
+  if (given.size() > 1)
+    c.fail(given[1], std::string("is given with ") + given[0], expected);
+}
+
 /// The roles of the groups: regions, supports, reservoir, joints, loads,
 /// output faces and points; each facet group in one role, loads on the
 /// boundary.
@@ -618,13 +658,8 @@ void read_roles(const input::Case& c, DamModelConfig& cfg)
   cfg.regions = read_regions(c, mesh);
   cfg.fixed = facet_groups(c, mesh, "supports.fixed");
   cfg.viscous_spring = facet_groups(c, mesh, "supports.viscous_spring");
-  if (cfg.fixed.empty() == cfg.viscous_spring.empty())
-    c.fail(cfg.fixed.empty() ? "supports.fixed" : "supports.viscous_spring",
-           cfg.fixed.empty() ? "is empty" : "is given with supports.fixed",
-           "either the facet groups where the model is fixed (the "
-           "foundation's far boundary, or the dam base) or those of a "
-           "viscous-spring boundary: " +
-               name_list(mesh.groups, mesh.tdim - 1));
+  cfg.transmitting = facet_groups(c, mesh, "supports.transmitting");
+  read_supports(c, cfg);
   cfg.wetted = facet_groups(c, mesh, "reservoir.wetted");
   cfg.floor = facet_groups(c, mesh, "reservoir.floor");
   cfg.joint_tolerance = 0.0;
@@ -645,6 +680,7 @@ void read_roles(const input::Case& c, DamModelConfig& cfg)
        {std::pair{"reservoir.wetted", cfg.wetted},
         std::pair{"reservoir.floor", cfg.floor},
         std::pair{"supports.viscous_spring", cfg.viscous_spring},
+        std::pair{"supports.transmitting", cfg.transmitting},
         std::pair{"loads.traction_groups", c.strings("loads.traction_groups")}})
   {
     for (const auto& g : groups)
@@ -663,6 +699,7 @@ void read_roles(const input::Case& c, DamModelConfig& cfg)
   for (const auto& [key, groups] :
        {std::pair{"supports.fixed", &cfg.fixed},
         std::pair{"supports.viscous_spring", &cfg.viscous_spring},
+        std::pair{"supports.transmitting", &cfg.transmitting},
         std::pair{"reservoir.wetted", &cfg.wetted},
         std::pair{"reservoir.floor", &cfg.floor}})
   {
@@ -671,7 +708,8 @@ void read_roles(const input::Case& c, DamModelConfig& cfg)
       if (role.count(g))
         c.fail(key, "names \"" + g + "\", which " + role[g] + " names too",
                "each facet group in one of supports.fixed, "
-               "supports.viscous_spring, reservoir.wetted, reservoir.floor");
+               "supports.viscous_spring, supports.transmitting, "
+               "reservoir.wetted, reservoir.floor");
       role[g] = key;
     }
   }

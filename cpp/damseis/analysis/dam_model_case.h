@@ -72,6 +72,9 @@ struct DamModelConfig
   /// Facet groups of a viscous-spring boundary (instead of `fixed`), and
   /// the foundation it makes (rock with mass, wave input).
   std::vector<std::string> viscous_spring;
+  /// Facet groups of a multi-transmitting boundary (instead of `fixed`;
+  /// fixed in the static and modal stages).
+  std::vector<std::string> transmitting;
   std::optional<WaveFoundation> wave;
   std::vector<std::string> wetted; ///< facet groups the reservoir wets
   std::vector<std::string> floor;  ///< reservoir floor (reservoir.load_floor)
@@ -113,9 +116,10 @@ DamModelConfig read_dam_model_config(const input::Case& c);
 std::array<std::array<double, 3>, 2>
 extreme_vertices(const geometry::Model& model, const std::set<int>& regions);
 
-/// supports.viscous_spring: the rock (every region but the dam's, one
-/// material with mass), the spring factors, the scattering centre, the
-/// model's bottom and the dam's lowest point as the reference surface
+/// supports.viscous_spring or supports.transmitting: the rock (every
+/// region but the dam's, one material with mass), the spring factors or
+/// the formula and its band, the scattering centre, the model's bottom and
+/// the dam's lowest point as the reference surface
 /// (dam_model_foundation.cpp). Throws input::InputError.
 void read_wave_foundation(const input::Case& c, DamModelConfig& cfg);
 

@@ -96,10 +96,9 @@ TransmittingFoundation::TransmittingFoundation(
   const Transmitting& t = *wave.mtf;
   // The band's cells are the explicit group (none if it is implicit).
   const std::vector<std::int32_t> band =
-      region_cells(fe.model(), t.band_region);
+      region_cells(fe.model(), t.band_regions);
   fem::ElasticModel::Partitioned p = fe.assemble_partitioned(
-      t.band_explicit ? std::vector<int>{t.band_region} : std::vector<int>{},
-      reservoir);
+      t.band_explicit ? t.band_regions : std::vector<int>{}, reservoir);
   _K = Matrix(p.K, false);
   _K_implicit = Matrix(p.K_implicit, false);
   _M = Matrix(p.M, false);
@@ -217,8 +216,9 @@ void TransmittingFoundation::check_time_step(dynamics::RayleighDamping damping,
       << " s is above the stable step of the transmitting boundary's "
          "explicit band, "
       << _stable_dt
-      << " s: a smaller time.dt (or a coarser "
-         "foundation.band_size)";
+      << " s: a smaller time.dt, a band of larger cells "
+         "(foundation.band_size; in dam_model the mesh's band), or "
+         "foundation.band_integration = \"implicit\"";
     throw input::InputError(m.str());
   }
   if (scheme.alpha != 0.0 && _wave.mtf->band_explicit)

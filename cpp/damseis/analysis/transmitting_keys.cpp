@@ -4,8 +4,7 @@
 
 namespace damseis::analysis
 {
-void add_transmitting_keys(input::Schema& s, const std::string& where,
-                           const std::string& band_size)
+void add_formula_keys(input::Schema& s)
 {
   s.integer("foundation.mtf_order", "2", "-",
             "order N of the multi-transmitting formula (2 needs mesh.order "
@@ -30,6 +29,12 @@ void add_transmitting_keys(input::Schema& s, const std::string& where,
            "acceleration, consistent mass: only s = c_p dt / dx <= 1 bounds "
            "the step)",
            {"explicit", "implicit"});
+}
+
+void add_transmitting_keys(input::Schema& s, const std::string& where,
+                           const std::string& band_size)
+{
+  add_formula_keys(s);
   s.integer("foundation.band_layers", "4", "-",
             "layers of cells in the structured band along the block's " +
                 where +
@@ -44,8 +49,8 @@ void add_transmitting_keys(input::Schema& s, const std::string& where,
       .at_most(1000);
 }
 
-Transmitting read_transmitting_keys(const input::Case& c, int mesh_order,
-                                    bool active, BandKeys& band)
+Transmitting read_formula_keys(const input::Case& c, int mesh_order,
+                               bool active)
 {
   Transmitting t;
   t.order = static_cast<int>(c.integer("foundation.mtf_order"));
@@ -54,19 +59,25 @@ Transmitting read_transmitting_keys(const input::Case& c, int mesh_order,
   t.band_damping = c.real("foundation.band_damping");
   if (mesh_order == 2 && !c.is_set("foundation.band_damping"))
     t.band_damping = 0.1; // tests/fem/test_mtf_box.cpp: 0.05 is not enough
-
-  t.band_region = geometry::tags::foundation_band;
-  band.layers = static_cast<int>(c.integer("foundation.band_layers"));
-  band.size = c.real("foundation.band_size");
-  t.spacing = band.size / mesh_order;
-  if (!active)
-    return t;
-  if (mesh_order == 2 && t.order == 2)
+  if (active && mesh_order == 2 && t.order == 2)
     c.fail("foundation.mtf_order",
            "2 drifts away on P2 elements (the band's lumped lattice "
            "alternates vertex and midside masses; tests/fem/"
            "test_mtf_boundary.cpp)",
            "mesh.order = 1, or foundation.mtf_order = 1");
+  return t;
+}
+
+Transmitting read_transmitting_keys(const input::Case& c, int mesh_order,
+                                    bool active, BandKeys& band)
+{
+  Transmitting t = read_formula_keys(c, mesh_order, active);
+  t.band_regions = {geometry::tags::foundation_band};
+  band.layers = static_cast<int>(c.integer("foundation.band_layers"));
+  band.size = c.real("foundation.band_size");
+  t.spacing = band.size / mesh_order;
+  if (!active)
+    return t;
   // The stencil: nodes k = 0 .. 2N along the normal, mesh_order node
   // spacings per layer.
   const int needed = (2 * t.order + mesh_order - 1) / mesh_order;
@@ -81,7 +92,8 @@ Transmitting read_transmitting_keys(const input::Case& c, int mesh_order,
 
 void check_transmitting_step(const input::Case& c, double hht_alpha,
                              const Transmitting& t, bool nonlinear_engine,
-                             const boundary::Rock& rock, double dt)
+                             const boundary::Rock& rock, double dt,
+                             const std::string& coarser)
 {
   if (hht_alpha != 0.0 && t.band_explicit)
     c.fail("time.hht_alpha",
@@ -108,7 +120,8 @@ void check_transmitting_step(const input::Case& c, double hht_alpha,
             << " m) must be at most 1";
     fix << "time.dt at most " << spacing / rock.cp()
         << " s (the explicit band's stable step is smaller still: the run "
-           "states it), or a larger foundation.band_size";
+           "states it), or "
+        << coarser;
     c.fail("time.dt", problem.str(), fix.str());
   }
 }

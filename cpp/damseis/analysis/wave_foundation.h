@@ -39,7 +39,9 @@ struct Transmitting
   /// the band's highest frequency (dynamics::PartitionedNewmark's b_E).
   double band_damping = 0.0;
   double spacing = 0.0; ///< node spacing of the band along its normals [m]
-  int band_region = 0;  ///< the band's cell tag
+  /// The band's cell tags: the cells the formula's stencils read (points
+  /// between nodes interpolated), the explicit group if `band_explicit`.
+  std::vector<int> band_regions;
   /// The band explicit with lumped mass (the Hughes-Liu partition), or
   /// implicit with the rest (consistent mass; no stable step of its own).
   bool band_explicit = true;

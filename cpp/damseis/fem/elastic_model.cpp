@@ -12,6 +12,14 @@ namespace damseis::fem
 {
 namespace dfem = dolfinx::fem;
 
+std::shared_ptr<dolfinx::fem::FunctionSpace>
+displacement_space(std::shared_ptr<dolfinx::mesh::Mesh> mesh, int degree)
+{
+  const FormSet& forms = form_set(mesh->topology().dim(), degree);
+  return std::make_shared<dolfinx::fem::FunctionSpace>(
+      dfem::create_functionspace(forms.space_of_stiffness, "v", mesh));
+}
+
 ElasticModel::ElasticModel(geometry::Model model, int degree,
                            const std::map<int, Material>& materials,
                            PlaneMode mode)
@@ -21,8 +29,7 @@ ElasticModel::ElasticModel(geometry::Model model, int degree,
   auto mesh = _model.mesh;
   const int tdim = mesh->topology().dim();
   mesh->topology_mutable().create_connectivity(tdim - 1, tdim);
-  _V = std::make_shared<FunctionSpace>(
-      dfem::create_functionspace(_forms.space_of_stiffness, "v", mesh));
+  _V = displacement_space(mesh, degree);
   _S = std::make_shared<FunctionSpace>(
       dfem::create_functionspace(_forms.space_of_stress, "tau", mesh));
   auto Q = std::make_shared<FunctionSpace>(

@@ -44,6 +44,11 @@ struct Reservoir
   double depth() const { return level > bottom ? level - bottom : 0.0; }
 };
 
+/// The displacement space of the models on `mesh` (vector Lagrange of
+/// `degree`), as ElasticModel::V() has it.
+std::shared_ptr<dolfinx::fem::FunctionSpace>
+displacement_space(std::shared_ptr<dolfinx::mesh::Mesh> mesh, int degree);
+
 /// Owns the spaces, coefficients and forms of one elastic model.
 /// Matrices and vectors are returned as new PETSc objects: the caller owns
 /// them (wrap them in dolfinx::la::petsc::Matrix / Vector).

@@ -84,18 +84,17 @@ std::string format(const Point& x, int dim)
   return s.str();
 }
 
-/// Throws std::invalid_argument with the message of the lowest rank that
-/// has one, on every rank (collective).
-void throw_if_any(MPI_Comm comm, const std::string& message)
+/// The message of the lowest rank that has one (empty: none), on every
+/// rank (collective).
+std::string lowest_rank_message(MPI_Comm comm, const std::string& message)
 {
   int rank = 0, first = 0;
   MPI_Comm_rank(comm, &rank);
   const int mine = message.empty() ? 1 << 30 : rank;
   MPI_Allreduce(&mine, &first, 1, MPI_INT, MPI_MIN, comm);
   if (first == 1 << 30)
-    return;
-  throw std::invalid_argument(
-      geometry::broadcast_from_root(comm, message, first));
+    return {};
+  return geometry::broadcast_from_root(comm, message, first);
 }
 
 /// The global block of each local (owned and ghost) block of V.
@@ -322,7 +321,44 @@ private:
   std::vector<std::int64_t> _blocks; ///< per cell, its nodes' global blocks
   std::map<Key, std::vector<std::int32_t>> _grid;
 };
+/// The message for stencil point k of `node` at p, which no band cell
+/// holds.
+std::string missing_point(const Point& p, const MtfBoundary::Node& node, int k,
+                          double dx, int tdim)
+{
+  return "the foundation has no band for the multi-transmitting boundary "
+         "at " +
+         format(p, tdim) + ", " + std::to_string(k) +
+         " node spacings inward of the boundary node at " +
+         format(node.x, tdim) + " (the band must reach 2N node spacings of " +
+         std::to_string(dx) + " m inward along the normals)";
+}
 } // namespace
+
+std::string band_gap(const dolfinx::fem::FunctionSpace& V,
+                     const dolfinx::mesh::MeshTags<std::int32_t>& facets,
+                     const std::vector<int>& boundary_tags,
+                     const std::vector<std::int32_t>& band_cells, int order,
+                     double spacing)
+{
+  const auto& mesh = *V.mesh();
+  const BandCells band(V, band_cells, spacing);
+  std::string missing;
+  for (const auto& [b, node] : boundary_nodes(V, facets, boundary_tags))
+  {
+    for (int k = 0; k <= 2 * order && missing.empty(); ++k)
+    {
+      Point p = node.x;
+      for (int j = 0; j < 3; ++j)
+        p[j] -= k * spacing * node.normal[j];
+      if (band.weights(p).empty())
+        missing = missing_point(p, node, k, spacing, mesh.topology().dim());
+    }
+    if (!missing.empty())
+      break;
+  }
+  return lowest_rank_message(mesh.comm(), missing);
+}
 
 MtfBoundary::MtfBoundary(const dolfinx::fem::FunctionSpace& V,
                          const dolfinx::mesh::MeshTags<std::int32_t>& facets,
@@ -376,13 +412,7 @@ MtfBoundary::MtfBoundary(const dolfinx::fem::FunctionSpace& V,
       const auto weights = band.weights(p);
       if (weights.empty())
       {
-        missing = "the foundation has no band for the multi-transmitting "
-                  "boundary at " +
-                  format(p, tdim) + ", " + std::to_string(k) +
-                  " node spacings inward of the boundary node at " +
-                  format(node.x, tdim) +
-                  " (the band must reach 2N node spacings of " +
-                  std::to_string(dx) + " m inward along the normals)";
+        missing = missing_point(p, node, k, dx, tdim);
         break;
       }
       for (const auto& [block, w] : weights)
@@ -401,7 +431,8 @@ MtfBoundary::MtfBoundary(const dolfinx::fem::FunctionSpace& V,
     for (int c = 0; c < _dim; ++c)
       _rows.push_back((first_block + b) * _dim + c);
   }
-  throw_if_any(comm, missing);
+  if (const std::string m = lowest_rank_message(comm, missing); !m.empty())
+    throw std::invalid_argument(m);
   std::int64_t counts[2] = {static_cast<std::int64_t>(_nodes.size()),
                             std::count_if(_nodes.begin(), _nodes.end(),
                                           [](const Node& n)

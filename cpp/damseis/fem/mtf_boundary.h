@@ -30,6 +30,7 @@
 #include <dolfinx/mesh/MeshTags.h>
 #include <functional>
 #include <petscvec.h>
+#include <string>
 #include <vector>
 
 namespace damseis::fem
@@ -54,6 +55,17 @@ struct MtfSettings
 /// on the sides the free field.
 using KnownField = std::function<std::array<double, 3>(
     const std::array<double, 3>& x, bool bottom, double t)>;
+
+/// Whether the cells `band_cells` hold every stencil point of Liao's
+/// formula of `order` with node spacing `spacing` at the nodes of V on the
+/// facets tagged `boundary_tags` (as MtfBoundary reads them): empty if so,
+/// else one line naming the first point missing (the same on every rank).
+/// Collective.
+std::string band_gap(const dolfinx::fem::FunctionSpace& V,
+                     const dolfinx::mesh::MeshTags<std::int32_t>& facets,
+                     const std::vector<int>& boundary_tags,
+                     const std::vector<std::int32_t>& band_cells, int order,
+                     double spacing);
 
 class MtfBoundary : public dynamics::PrescribedDisplacement
 {
