@@ -52,6 +52,23 @@ cdiff = max(abs(ea["max_m"][top] - ca["ux_m"].max()),
             abs(ea["min_m"][top] - ca["ux_m"].min())) / peak
 print(f"displacement envelope 2 ranks vs serial {ediff:.2e}, "
       f"crest node vs crest history {cdiff:.2e}")
+# Face tables: the same header and rows as serial (every rank's rows in
+# rank 0's columns: a rank without points on a face once wrote one column
+# fewer), the envelope values equal point by point.
+import glob, os
+for fa_path in sorted(glob.glob(f"{a}/face_*.csv")):
+    fb_path = f"{b}/{os.path.basename(fa_path)}"
+    ha, hb = open(fa_path).readline(), open(fb_path).readline()
+    assert ha == hb, (fb_path, ha, hb)
+    ta = np.genfromtxt(fa_path, delimiter=",", names=True)
+    tb = np.genfromtxt(fb_path, delimiter=",", names=True)
+    assert ta.shape == tb.shape, (fb_path, ta.shape, tb.shape)
+    oa, ob = (np.lexsort((t["z_m"], t["y_m"], t["x_m"])) for t in (ta, tb))
+    for k in ("x_m", "y_m", "max_principal_mpa", "min_principal_mpa"):
+        scale = max(np.abs(ta[k]).max(), 1e-30)
+        d = np.abs(ta[k][oa] - tb[k][ob]).max() / scale
+        assert d < max(tol, 1e-7), (fb_path, k, d)  # 8 digits written
+    print(f"{os.path.basename(fa_path)}: {len(ta)} rows as serial")
 # Vertical-stress envelope (nonlinear runs): sigma_yy lies between the
 # principal stresses at every point, so its envelope does too.
 try:

@@ -68,6 +68,7 @@ fem::Material the_rock(const input::Case& c, const DamModelConfig& cfg,
            "a region outside regions.dam (the foundation)");
   return rock->material;
 }
+
 /// The mean edge length of the owned facets tagged `tags` (every rank).
 double mean_facet_edge(const geometry::Model& model,
                        const std::vector<int>& tags)

@@ -61,7 +61,11 @@ void write_face_csv(MPI_Comm comm, const results::StressEnvelope& env,
                     std::span<const std::int8_t> joint_sides,
                     std::span<const std::int64_t> cells)
 {
-  const bool sides = !joint_sides.empty(), with_cells = !cells.empty();
+  // The columns of every rank's rows: a rank without points on this face
+  // has empty spans, and rank 0 writes the header.
+  int columns[2] = {!joint_sides.empty(), !cells.empty()};
+  MPI_Allreduce(MPI_IN_PLACE, columns, 2, MPI_INT, MPI_MAX, comm);
+  const bool sides = columns[0], with_cells = columns[1];
   std::vector<double> local;
   for (std::size_t i = 0; i < points.size(); ++i)
   {
