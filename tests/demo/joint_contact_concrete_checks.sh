@@ -15,7 +15,8 @@
 #     reservoir 215 m, 1.5 s of the Section I record): every entry of the
 #     joint table within 1e-3 cm (4 decimals written; measured 1e-4 cm, one
 #     digit in the last place) and the crest history within 1e-6 m
-#     (measured 4e-7 m: the static stage's Newton tolerance). The same on
+#     (measured 4e-7 m: the static stage's Newton tolerance; run by hand
+#     since, to keep CI short: the cube covers massless rock). On
 #     rock with mass on the viscous-spring boundary (rho 2000 kg/m3: the
 #     everything-on run's foundation): the same modes and Rayleigh
 #     coefficients (the bonded system's springs in both engines; 1e-12),
@@ -80,8 +81,8 @@ expect_no_equilibrium "static_friction_threshold_plastic" \
   --set joints.model=contact --set 'joints.friction=[0.2]' "${weak[@]}" \
   --set 'loads.body_force_groups=[block]' --set "loads.body_force=[$(bx 1.02), 0, 0]"
 
-# The arch dam with 7 contact joints, linear and elastic HTC, on massless
-# rock and on rock with mass (1).
+# The arch dam with 7 contact joints, linear and elastic HTC, on rock with
+# mass (1; massless, the cube's runs above).
 arch_run() { # out args...
   local out=$1
   shift
@@ -93,7 +94,6 @@ arch_run() { # out args...
 }
 vs=(--set foundation.boundary=viscous_spring --set rock.rho=2000)
 for model in linear elastic; do
-  arch_run "arch_$model" --set material.model=$model
   arch_run "arch_vs_$model" --set material.model=$model "${vs[@]}"
 done
 
@@ -128,7 +128,7 @@ se = summary("elastic")["joints"]["max_sliding_cm"]
 check("cube: elastic HTC = linear (crest)", d < 1e-8, f"crest histories differ by {d:.1e} m")
 check("cube: elastic HTC = linear (sliding)", abs(se - sl) < 1e-6 * sl,
       f"largest sliding {se:.8f} cm against {sl:.8f} cm")
-for rock in ("", "vs_"):
+for rock in ("vs_",):
     where = "rock with mass" if rock else "massless rock"
     lin, el = f"arch_{rock}linear", f"arch_{rock}elastic"
     d = largest_difference(rows(lin, "joint_table.csv"), rows(el, "joint_table.csv"))
