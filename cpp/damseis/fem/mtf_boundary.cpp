@@ -333,6 +333,36 @@ std::string missing_point(const Point& p, const MtfBoundary::Node& node, int k,
          format(node.x, tdim) + " (the band must reach 2N node spacings of " +
          std::to_string(dx) + " m inward along the normals)";
 }
+
+/// The formula's points x_k = x_0 - k dx n (k = 0 .. width - 1) of every
+/// node, each as the global blocks and weights that interpolate the field
+/// there in the band's cells, in the nodes' order; `missing` names the
+/// first point no band cell holds (then the points stop there).
+struct Stencils
+{
+  std::vector<std::vector<std::pair<std::int64_t, double>>> points;
+  std::string missing;
+};
+
+Stencils find_stencils(const std::map<std::int32_t, MtfBoundary::Node>& nodes,
+                       const BandCells& band, int width, double dx, int tdim)
+{
+  Stencils s;
+  for (const auto& [b, node] : nodes)
+    for (int k = 0; k < width; ++k)
+    {
+      Point p = node.x;
+      for (int j = 0; j < 3; ++j)
+        p[j] -= k * dx * node.normal[j];
+      s.points.push_back(band.weights(p));
+      if (s.points.back().empty())
+      {
+        s.missing = missing_point(p, node, k, dx, tdim);
+        return s;
+      }
+    }
+  return s;
+}
 } // namespace
 
 std::string band_gap(const dolfinx::fem::FunctionSpace& V,
@@ -342,22 +372,11 @@ std::string band_gap(const dolfinx::fem::FunctionSpace& V,
                      double spacing)
 {
   const auto& mesh = *V.mesh();
-  const BandCells band(V, band_cells, spacing);
-  std::string missing;
-  for (const auto& [b, node] : boundary_nodes(V, facets, boundary_tags))
-  {
-    for (int k = 0; k <= 2 * order && missing.empty(); ++k)
-    {
-      Point p = node.x;
-      for (int j = 0; j < 3; ++j)
-        p[j] -= k * spacing * node.normal[j];
-      if (band.weights(p).empty())
-        missing = missing_point(p, node, k, spacing, mesh.topology().dim());
-    }
-    if (!missing.empty())
-      break;
-  }
-  return lowest_rank_message(mesh.comm(), missing);
+  const Stencils stencils =
+      find_stencils(boundary_nodes(V, facets, boundary_tags),
+                    BandCells(V, band_cells, spacing), 2 * order + 1, spacing,
+                    mesh.topology().dim());
+  return lowest_rank_message(mesh.comm(), stencils.missing);
 }
 
 MtfBoundary::MtfBoundary(const dolfinx::fem::FunctionSpace& V,
@@ -398,24 +417,19 @@ MtfBoundary::MtfBoundary(const dolfinx::fem::FunctionSpace& V,
 
   // The stencils: per node and k, the gathered blocks and their weights.
   const int width = _normal.stencil();
+  const Stencils stencils = find_stencils(nodes, band, width, dx, tdim);
+  if (const std::string m = lowest_rank_message(comm, stencils.missing);
+      !m.empty())
+    throw std::invalid_argument(m);
   std::map<std::int64_t, std::int32_t> position; // global block -> buffer
   std::vector<PetscInt> gathered;
-  std::string missing;
   _offsets.push_back(0);
+  auto point = stencils.points.begin();
   for (const auto& [b, node] : nodes)
   {
-    for (int k = 0; k < width && missing.empty(); ++k)
+    for (int k = 0; k < width; ++k, ++point)
     {
-      Point p = node.x;
-      for (int j = 0; j < 3; ++j)
-        p[j] -= k * dx * node.normal[j];
-      const auto weights = band.weights(p);
-      if (weights.empty())
-      {
-        missing = missing_point(p, node, k, dx, tdim);
-        break;
-      }
-      for (const auto& [block, w] : weights)
+      for (const auto& [block, w] : *point)
       {
         auto [it, inserted] = position.try_emplace(
             block, static_cast<std::int32_t>(position.size()));
@@ -431,8 +445,6 @@ MtfBoundary::MtfBoundary(const dolfinx::fem::FunctionSpace& V,
     for (int c = 0; c < _dim; ++c)
       _rows.push_back((first_block + b) * _dim + c);
   }
-  if (const std::string m = lowest_rank_message(comm, missing); !m.empty())
-    throw std::invalid_argument(m);
   std::int64_t counts[2] = {static_cast<std::int64_t>(_nodes.size()),
                             std::count_if(_nodes.begin(), _nodes.end(),
                                           [](const Node& n)
