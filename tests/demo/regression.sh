@@ -3,11 +3,15 @@
 # tests/data/regression/<name>, written by the code before the one-engine
 # refactor (issue 18, commit ac28040). Compared: every number and word of
 # summary.json except timings and paths, crest.csv, face_<name>.csv,
-# displacement_envelope.csv and table1.csv. Tolerances: linear runs 1e-9
-# relative to the largest value of a file (round-off; measured 0, the
-# arithmetic is the same), runs with nonlinear concrete 1e-6 (the Newton
-# tolerance: a change in the order of the floating-point operations may move
-# a converged iterate by that much).
+# displacement_envelope.csv and table1.csv; not the Newton iteration's
+# statistics (iterations, GMRES iterations, return maps: how the solution
+# was found, not what it is). Tolerances: linear runs 1e-9 relative to the
+# largest value of a file (round-off; measured 0, the arithmetic is the
+# same), runs with nonlinear concrete 1e-5: the Newton tolerance (1e-6 of
+# the load per step) carried along the inelastic path. A converged iterate
+# moves by that much when the iteration takes another path to it: starting
+# from Newmark's predictor in place of the last displacement moved these
+# results by up to 3.3e-6.
 # Usage: regression.sh BIN_DIR PYTHON SOURCE_DIR [NAME]
 set -eu
 bin=$1 python=$2 src=$3 only=${4:-}
@@ -28,13 +32,13 @@ import numpy as np
 ref, run, name = sys.argv[1:4]
 worst, failures = 0.0, []
 def tolerance(summary):
-    return 1e-6 if "newton" in summary else 1e-9
+    return 1e-5 if "newton" in summary else 1e-9
 def walk(x, y, path, tol):
     global worst
     if isinstance(x, dict):
         for k, v in x.items():
             # timings, and paths (the record file: where the tree is)
-            if "second" in k or k in ("warnings", "solver", "record"):
+            if "second" in k or k in ("warnings", "solver", "record", "newton"):
                 continue
             if k not in y:
                 failures.append(f"{path}/{k} missing")
@@ -66,7 +70,8 @@ for root, _, files in os.walk(ref):
             # columns of the numbers of the summaries (timings excluded)
             A = np.genfromtxt(a, delimiter=",", names=True, dtype=None, encoding=None)
             B = np.genfromtxt(b, delimiter=",", names=True, dtype=None, encoding=None)
-            cols = [c for c in A.dtype.names if A[c].dtype.kind == "f" and "second" not in c]
+            cols = [c for c in A.dtype.names if A[c].dtype.kind == "f"
+                    and "second" not in c and "newton" not in c]
         else:
             A = np.genfromtxt(a, delimiter=",", names=True)
             B = np.genfromtxt(b, delimiter=",", names=True)

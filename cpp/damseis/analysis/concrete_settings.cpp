@@ -89,10 +89,12 @@ void add_concrete_keys(input::Schema& s)
            "the initial matrix (first-order accurate in dt; check with a "
            "smaller time.dt)",
            {"implicit", "implex"});
-  s.boolean("solver.extrapolated_predictor", "false", "-",
-            "implicit integration: start each step's Newton iteration from "
-            "the step's IMPL-EX solution (one extra solve with the "
-            "factorised initial matrix) instead of the last displacement");
+  s.boolean(
+      "solver.extrapolated_predictor", "false", "-",
+      "implicit integration: start each step's Newton iteration from "
+      "the step's IMPL-EX solution (one extra solve with the "
+      "factorised initial matrix) instead of Newmark's predictor u + dt v "
+      "+ dt^2 (1/2 - beta) a");
   s.integer("solver.static_increments", "5", "-",
             "load increments of the reservoir in the static stage")
       .between(1, 1000);

@@ -74,7 +74,8 @@ bool newton(const std::function<bool(Vec, Vec)>& residual,
   double r = norm(R);
   const double tol = s.rtol * reference;
   if (trace)
-    std::fprintf(stderr, "newton: it 0  |R|/|F| %.3e\n", r / reference);
+    std::fprintf(stderr, "newton: it 0  |R|/|F| %.3e  |F| %.3e\n",
+                 r / reference, reference);
   bool converged = false;
   // Non-monotone line search (Grippo, Lampariello & Lucidi 1986): a trial is
   // accepted if it decreases the largest of the last 4 residual norms, so
@@ -665,13 +666,15 @@ bool NonlinearNewmark::solve_step(double dt, Vec f_next, int level,
     _system.add_tangent_change(J, w);
   };
 
-  VecCopy(_u, _ut); // predictor: u' = u
+  // Predictor: Newmark's, u' = d~ = u + dt v + dt^2 (1/2 - beta) a (the
+  // new acceleration zero; also the explicit elements' state). Measured
+  // against u' = u (viscoplastic arch 16 m P1 and Koyna 2D, on both
+  // transmitting boundaries): 9% to 24% fewer Newton iterations, the same
+  // solution to the Newton tolerance.
+  VecWAXPY(_ut, dt, _v, _u);
+  VecAXPY(_ut, (0.5 - beta) * dt * dt, _a);
   if (_partition.K_explicit)
-  {
-    // d~ = u + dt v + dt^2 (1/2 - beta) a (the explicit elements' state).
-    VecWAXPY(_d_p, dt, _v, _u);
-    VecAXPY(_d_p, (0.5 - beta) * dt * dt, _a);
-  }
+    VecCopy(_ut, _d_p);
   if (_partition.prescribed)
   {
     prescribed_values((_elapsed + dt) / _scheme.dt);
