@@ -119,4 +119,9 @@ TEST(CheckpointFile, CaseFingerprintIgnoresRunOutputSolverAndComments)
   const std::string c = "[material]\nE = 3.1e10  # Pa\n";
   EXPECT_EQ(case_fingerprint(a), case_fingerprint(b));
   EXPECT_NE(case_fingerprint(a), case_fingerprint(c));
+  // A default key is a commented line (Case::to_toml) whose value counts.
+  const std::string d = "[material]\n# E = 3e10  # Pa (default)\n";
+  const std::string e = "[material]\n# E = 3.1e10  # Pa (default)\n";
+  EXPECT_NE(case_fingerprint(d), case_fingerprint(e));
+  EXPECT_NE(case_fingerprint(d), case_fingerprint("[material]\n"));
 }

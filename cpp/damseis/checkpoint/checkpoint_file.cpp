@@ -94,7 +94,13 @@ std::uint64_t case_fingerprint(const std::string& case_text)
   std::string line, table, kept;
   while (std::getline(in, line))
   {
-    if (line.empty() || line[0] == '#')
+    // A default key is written commented out: "# key = value  # ...
+    // (default)" (Case::to_toml); its value counts.
+    const std::string mark = " (default)";
+    if (line.rfind("# ", 0) == 0 && line.size() > mark.size() &&
+        line.compare(line.size() - mark.size(), mark.size(), mark) == 0)
+      line.erase(0, 2);
+    else if (line.empty() || line[0] == '#')
       continue;
     if (line[0] == '[')
     {

@@ -38,9 +38,9 @@ inline constexpr std::int64_t max_arrays = 1000;
 /// coordinates), to refuse a checkpoint from another mesh or partition.
 std::uint64_t fingerprint(std::span<const double> values);
 
-/// A fingerprint of the effective case (Case::to_toml text) without what a
-/// restart may change: comments and the [run], [output] and [solver]
-/// tables. A checkpoint of a case with another material, geometry, load or
+/// A fingerprint of the effective case (Case::to_toml text, the default
+/// keys' commented lines included) without what a restart may change:
+/// comments and the [run], [output] and [solver] tables. A checkpoint of a case with another material, geometry, load or
 /// time step is refused.
 std::uint64_t case_fingerprint(const std::string& case_text);
 

@@ -1133,6 +1133,8 @@ std::vector<std::string> Case::strings(const std::string& key) const
 std::filesystem::path Case::path(const std::string& key) const
 {
   const std::filesystem::path p(string(key));
+  if (!p.empty())
+    _path_keys.insert(key);
   if (p.empty() || p.is_absolute())
     return p;
   return (_file.parent_path() / p).lexically_normal();
@@ -1164,10 +1166,11 @@ std::string Case::to_toml() const
   std::stable_partition(tables.begin(), tables.end(),
                         [](const std::string& t) { return t.empty(); });
 
-  std::string text = "# Effective damseis case: every key with its final "
-                     "value (file, --set or default).\n# Read from " +
-                     one_line(_file.string()) +
-                     "; relative paths in it are relative to that file.\n";
+  std::string text =
+      "# Effective damseis case: every key with its final value (file, --set "
+      "or default;\n# the defaults commented out, paths made absolute).\n"
+      "# Read from " +
+      one_line(_file.string()) + "\n";
   for (const std::string& override_text : _overrides)
     text += "# --set " + one_line(override_text) + "\n";
   for (const std::string& table : tables)
@@ -1178,7 +1181,13 @@ std::string Case::to_toml() const
       if (table_of(key.path) != table)
         continue;
       const Entry& e = _values.at(key.path);
-      text += leaf(key.path) + " = " + value_text(e.value) + "  # [" +
+      const std::string value =
+          _path_keys.count(key.path)
+              ? value_text(std::filesystem::absolute(path(key.path))
+                               .lexically_normal()
+                               .string())
+              : value_text(e.value);
+      text += (e.set ? "" : "# ") + leaf(key.path) + " = " + value + "  # [" +
               (key.unit.empty() ? "-" : key.unit) + "] " + one_line(key.help) +
               (e.set ? "" : " (default)") + "\n";
     }

@@ -30,6 +30,7 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -213,7 +214,8 @@ public:
 
   /// A string key holding a path, resolved relative to the directory of the
   /// case file (absolute paths are kept; an empty string gives an empty
-  /// path, i.e. "none").
+  /// path, i.e. "none"). to_toml() writes the keys read this way as
+  /// absolute paths.
   std::filesystem::path path(const std::string& key) const;
 
   /// True if the key was given in the file or by --set (not defaulted).
@@ -233,9 +235,12 @@ public:
 
   /// The effective case (all keys with their final values, unit and
   /// description as comments; a header names the case file and the --set
-  /// overrides) as TOML text, to be saved with the results. Loading it again
-  /// gives the same values. String values are written as they are: a
-  /// relative path in them stays relative to the original case file.
+  /// overrides) as TOML text, to be saved with the results. The keys left
+  /// to their defaults are written commented out,
+  /// "# key = value  # [unit] help (default)", and the keys read by path()
+  /// as absolute paths, so that loading it again, from anywhere, gives the
+  /// same values, given and defaulted alike (a default may depend on
+  /// other keys).
   std::string to_toml() const;
 
 private:
@@ -254,6 +259,8 @@ private:
   std::size_t _keys_in_file = 0;
   std::vector<Key> _keys;
   std::map<std::string, Entry> _values;
+  /// The keys read by path() (to_toml writes them absolute).
+  mutable std::set<std::string> _path_keys;
 };
 
 } // namespace damseis::input
