@@ -110,6 +110,21 @@ std::vector<Modes> solve_modes(Mat K, const std::vector<Mat>& Ms, int count,
   // MUMPS Cholesky does not take blocked (BAIJ) storage; LU does.
   PCSetType(pc, is_blocked(K) ? PCLU : PCCHOLESKY);
   PCFactorSetMatSolverType(pc, MATSOLVERMUMPS);
+  // MUMPS' workspace 40% above its estimate, as DirectSolver's (the
+  // default, 20%, fell short on a rank of the 7-joint Xiluodu-like dam on
+  // the multi-transmitting boundary, P2, 2 ranks: INFOG(1) = -9). SLEPc
+  // creates the factor inside EPSSolve, so through the options database
+  // under the solver's prefix, unless the user's PETSc options set it.
+  {
+    const char* prefix = nullptr;
+    KSPGetOptionsPrefix(ksp, &prefix);
+    const std::string key =
+        "-" + std::string(prefix ? prefix : "") + "mat_mumps_icntl_14";
+    PetscBool given = PETSC_FALSE;
+    PetscOptionsHasName(nullptr, nullptr, key.c_str(), &given);
+    if (!given)
+      PetscOptionsSetValue(nullptr, key.c_str(), "40");
+  }
   // Shift 0: the shift-and-invert operator is K itself, so K's factors
   // serve every problem, as long as SLEPc sees the same Mat objects (a new
   // M resets the spectral transformation, factors included): the masses
