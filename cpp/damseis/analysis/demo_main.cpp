@@ -16,11 +16,20 @@ PetscErrorCode petsc_error(MPI_Comm, int line, const char* fun,
     return n;
   const char* text = nullptr;
   PetscErrorMessage(n, &text, nullptr);
-  stop_on_internal_error(petsc_program,
-                         std::string("PETSc error ") + std::to_string(n) +
-                             " (" + (text ? text : "") + ") in " + fun + " (" +
-                             file + ":" + std::to_string(line) +
-                             "): " + (mess ? mess : ""));
+  const std::string what = mess ? mess : "";
+  // MUMPS' workspace too small (INFOG(1) = -8 or -9): the fix is the user's.
+  const bool workspace = what.find("INFOG(1)=-9") != std::string::npos ||
+                         what.find("INFOG(1)=-8") != std::string::npos;
+  stop_on_internal_error(
+      petsc_program,
+      std::string("PETSc error ") + std::to_string(n) + " (" +
+          (text ? text : "") + ") in " + fun + " (" + file + ":" +
+          std::to_string(line) + "): " + what +
+          (workspace ? "; MUMPS' workspace was too small: run again with "
+                       "PETSC_OPTIONS=\"-mat_mumps_icntl_14 80 "
+                       "-st_mat_mumps_icntl_14 80\" (80% above its "
+                       "estimate; damseis gives 40%)"
+                     : ""));
 }
 
 /// True if `dir` or, for a study, one of its runs' folders holds a
