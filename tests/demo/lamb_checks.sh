@@ -74,6 +74,7 @@ import sys
 import numpy as np
 w = sys.argv[1]
 sys.path.insert(0, sys.argv[2])
+from bounds import check, finish
 from lamb_reference import HalfSpace, surface_response, self_check
 
 hs = HalfSpace(20e9, 0.25, 2600.0)
@@ -100,12 +101,6 @@ def error(run, t_end=1e9):
             e = max(e, np.abs(data[run][f"x{x}_{c}"][m] - ref[m]).max() / peak)
     return e
 
-failures = 0
-def check(what, value, bound):
-    global failures
-    ok = value < bound
-    failures += not ok
-    print(f"{'ok  ' if ok else 'FAIL'} {what}: {value:.3g} (bound {bound:.3g})")
 
 print(f"Rayleigh speed {cR:.1f} m/s (c_s {hs.cs:.1f}, c_p {hs.cp:.1f})")
 # 1.
@@ -126,5 +121,5 @@ print(f"120 m block, t <= 0.15 s: multi-transmitting {mtf:.1%}, "
       f"viscous-spring {vs:.1%}")
 check("120 m block, t <= 0.15 s: multi-transmitting / viscous-spring",
       mtf / vs, 1.0)
-sys.exit(1 if failures else 0)
+finish()
 PY
