@@ -40,8 +40,8 @@ std::uint64_t fingerprint(std::span<const double> values);
 
 /// A fingerprint of the effective case (Case::to_toml text, the default
 /// keys' commented lines included) without what a restart may change:
-/// comments and the [run], [output] and [solver] tables. A checkpoint of a case with another material, geometry, load or
-/// time step is refused.
+/// comments and the [run], [output] and [solver] tables. A checkpoint of a
+/// case with another material, geometry, load or time step is refused.
 std::uint64_t case_fingerprint(const std::string& case_text);
 
 /// The text of checkpoint.json.
