@@ -63,7 +63,11 @@ for fa_path in sorted(glob.glob(f"{a}/face_*.csv")):
     ta = np.genfromtxt(fa_path, delimiter=",", names=True)
     tb = np.genfromtxt(fb_path, delimiter=",", names=True)
     assert ta.shape == tb.shape, (fb_path, ta.shape, tb.shape)
-    oa, ob = (np.lexsort((t["z_m"], t["y_m"], t["x_m"])) for t in (ta, tb))
+    # A vertex of a P2 face is a row per adjacent face cell (the stress
+    # points are DG1: one value per cell), in the ranks' own order: the
+    # rows at one point are ordered by their values.
+    oa, ob = (np.lexsort((t["min_principal_mpa"], t["max_principal_mpa"],
+                          t["z_m"], t["y_m"], t["x_m"])) for t in (ta, tb))
     for k in ("x_m", "y_m", "max_principal_mpa", "min_principal_mpa"):
         scale = max(np.abs(ta[k]).max(), 1e-30)
         d = np.abs(ta[k][oa] - tb[k][ob]).max() / scale
