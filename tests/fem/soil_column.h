@@ -34,23 +34,49 @@ inline std::vector<double> pulse_acceleration(double A, double T, double dt,
   return a;
 }
 
-/// The value of component c of x at the node at p (collective).
-inline double node_value(const dolfinx::fem::FunctionSpace& V, Vec x,
-                         const Point& p, int c)
+/// The pulse's acceleration at time t.
+inline double pulse_acceleration(double A, double T, double t)
 {
-  const int bs = V.dofmap()->index_map_bs();
-  const std::int32_t n = V.dofmap()->index_map->size_local();
-  const std::vector<double> X = V.tabulate_dof_coordinates(false);
-  const double* a = nullptr;
-  VecGetArrayRead(x, &a);
-  double v = 0.0;
-  for (std::int32_t i = 0; i < n; ++i)
-    if (std::hypot(X[3 * i] - p[0], X[3 * i + 1] - p[1], X[3 * i + 2] - p[2]) <
-        1e-9)
-      v = a[bs * i + c];
-  VecRestoreArrayRead(x, &a);
-  return global_sum(v);
+  if (t <= 0 || t >= T)
+    return 0.0;
+  const double w = std::numbers::pi / T;
+  const double s = std::sin(w * t), c = std::cos(w * t);
+  return A * w * w * (12 * s * s * c * c - 4 * s * s * s * s);
 }
+
+/// A node of V at p: its values in vectors of V's layout, the node found
+/// once (a rank that does not own it reads 0; the values are summed).
+class NodeProbe
+{
+public:
+  NodeProbe(const dolfinx::fem::FunctionSpace& V, const Point& p)
+      : _bs(V.dofmap()->index_map_bs())
+  {
+    const std::int32_t n = V.dofmap()->index_map->size_local();
+    const std::vector<double> X = V.tabulate_dof_coordinates(false);
+    for (std::int32_t i = 0; i < n; ++i)
+      if (std::hypot(X[3 * i] - p[0], X[3 * i + 1] - p[1],
+                     X[3 * i + 2] - p[2]) < 1e-9)
+        _local = i;
+  }
+  /// Component c of x at the node (collective).
+  double operator()(Vec x, int c) const
+  {
+    double v = 0.0;
+    if (_local >= 0)
+    {
+      const double* a = nullptr;
+      VecGetArrayRead(x, &a);
+      v = a[_bs * _local + c];
+      VecRestoreArrayRead(x, &a);
+    }
+    return global_sum(v);
+  }
+
+private:
+  int _bs;
+  std::int32_t _local = -1;
+};
 
 /// Tags the local cells of `model` whose centre satisfies `in_band` with
 /// `band_region`, the others with tags::dam (the model's cell tags are
@@ -91,22 +117,32 @@ struct ColumnErrors
 
 /// Runs `step(k)` (the load of step k assembled, the integrator advanced)
 /// for k = 1..steps and measures component c of the displacement u at the
-/// node `top` against exact(k); then the residual motion (collective).
-template <class Step, class Exact>
+/// node `top` against exact(k), and calls `observe(k)` after each step;
+/// then the residual motion (collective).
+template <class Step, class Exact, class Observe>
 ColumnErrors march_column(const dolfinx::fem::FunctionSpace& V, Vec u,
                           const Point& top, int c, int steps, double A,
-                          Step step, Exact exact)
+                          Step step, Exact exact, Observe observe)
 {
   ColumnErrors e;
+  const NodeProbe surface(V, top);
   for (int k = 1; k <= steps; ++k)
   {
     step(k);
-    e.surface =
-        std::max(e.surface, std::abs(node_value(V, u, top, c) - exact(k)) / A);
+    e.surface = std::max(e.surface, std::abs(surface(u, c) - exact(k)) / A);
+    observe(k);
   }
   double umax = 0.0;
   VecNorm(u, NORM_INFINITY, &umax);
   e.residual = umax / A;
   return e;
+}
+
+template <class Step, class Exact>
+ColumnErrors march_column(const dolfinx::fem::FunctionSpace& V, Vec u,
+                          const Point& top, int c, int steps, double A,
+                          Step step, Exact exact)
+{
+  return march_column(V, u, top, c, steps, A, step, exact, [](int) {});
 }
 } // namespace damseis::test

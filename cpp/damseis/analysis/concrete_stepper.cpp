@@ -7,6 +7,8 @@ namespace
 {
 using dolfinx::la::petsc::Vector;
 const std::array<const char*, 4> state_names = {"u", "v", "a", "f_int"};
+/// The transmitting boundary's history (partitioned runs).
+const std::array<const char*, 3> prev_names = {"u_prev", "v_prev", "a_prev"};
 
 Vector copy(Vec x)
 {
@@ -170,7 +172,12 @@ void ConcreteStepper::save(engine::Arrays& arrays) const
     arrays[state_names[i]] = linalg::owned_values(x[i]);
   arrays["newton"] = _totals.to_array();
   if (_partitioned)
-    arrays["u_prev"] = linalg::owned_values(_newmark.u_prev());
+  {
+    const dynamics::Kinematics prev = _newmark.prev();
+    const std::array<Vec, 3> x = {prev.u, prev.v, prev.a};
+    for (int i = 0; i < 3; ++i)
+      arrays[prev_names[i]] = linalg::owned_values(x[i]);
+  }
   if (_contact)
     joint::save_contact(_contact->contact(), arrays);
 }
@@ -186,11 +193,12 @@ void ConcreteStepper::restore(const engine::CheckpointData& data)
   _model.restore(data.arrays);
   _totals.from_array(engine::checkpoint_array(data, "newton"));
   if (_partitioned)
-  {
-    _restored_u_prev = Vector(create_vector(), false);
-    linalg::set_owned_values(_restored_u_prev.vec(),
-                             engine::checkpoint_array(data, "u_prev"));
-  }
+    for (int i = 0; i < 3; ++i)
+    {
+      _restored_prev[i] = Vector(create_vector(), false);
+      linalg::set_owned_values(_restored_prev[i].vec(),
+                               engine::checkpoint_array(data, prev_names[i]));
+    }
   if (_contact)
     joint::restore_contact(data, _contact->contact());
   _step = data.step;
@@ -201,10 +209,13 @@ void ConcreteStepper::resume(Vec f)
   _newmark.set_state(_restored[0].vec(), _restored[1].vec(), _restored[2].vec(),
                      f, _restored[3].vec());
   if (_partitioned)
-    _newmark.set_history(_restored_u_prev.vec(), _step);
+    _newmark.set_history({_restored_prev[0].vec(), _restored_prev[1].vec(),
+                          _restored_prev[2].vec()},
+                         _step);
   for (auto& x : _restored)
     x = Vector(nullptr, false);
-  _restored_u_prev = Vector(nullptr, false);
+  for (auto& x : _restored_prev)
+    x = Vector(nullptr, false);
   _system.reset_counts();
 }
 

@@ -89,7 +89,11 @@ private:
   std::array<dolfinx::la::petsc::Vector, 4> _restored;
   bool _partitioned = false;
   /// u one step back read from a checkpoint (a partition) until resume().
-  dolfinx::la::petsc::Vector _restored_u_prev{nullptr, false};
+  /// The transmitting boundary's history: u, v, a one step back.
+  std::array<dolfinx::la::petsc::Vector, 3> _restored_prev{
+      dolfinx::la::petsc::Vector(nullptr, false),
+      dolfinx::la::petsc::Vector(nullptr, false),
+      dolfinx::la::petsc::Vector(nullptr, false)};
   NewtonTotals _totals;
   int _step = 0;
   std::shared_ptr<joint::NonlinearContact> _contact;

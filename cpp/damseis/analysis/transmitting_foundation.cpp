@@ -18,20 +18,22 @@ using dolfinx::la::petsc::Vector;
 
 namespace
 {
-/// A prescribed displacement of all dofs on the tied unknowns u_r (u = P
-/// u_r): its values from P u_r, its rows the unknowns its dofs alone give
-/// (untied dofs: P's column is theirs alone).
-class TiedPrescribed : public dynamics::PrescribedDisplacement
+/// A prescribed motion of all dofs on the tied unknowns u_r (u = P u_r):
+/// its values from P u_r (and P v_r, P a_r), its rows the unknowns its
+/// dofs alone give (untied dofs: P's column is theirs alone).
+class TiedPrescribed : public dynamics::PrescribedMotion
 {
 public:
-  TiedPrescribed(std::shared_ptr<dynamics::PrescribedDisplacement> inner, Mat P)
+  TiedPrescribed(std::shared_ptr<dynamics::PrescribedMotion> inner, Mat P)
       : _inner(std::move(inner)), _P(P)
   {
-    MatCreateVecs(P, &_reduced, &_full);
-    VecDuplicate(_full, &_full_prev);
+    MatCreateVecs(P, &_reduced, &_scratch);
+    for (Vec& x : _full)
+      VecDuplicate(_scratch, &x);
     // The number of prescribed dofs each tied unknown takes.
-    _inner_values.assign(_inner->rows().size(), 1.0);
-    to_reduced(_inner_values);
+    _inner_values.resize(_inner->rows().size());
+    _inner_values.u.assign(_inner->rows().size(), 1.0);
+    to_reduced(_inner_values.u);
     PetscInt r0 = 0, r1 = 0;
     VecGetOwnershipRange(_reduced, &r0, &r1);
     const double* r = nullptr;
@@ -48,20 +50,32 @@ public:
   }
   ~TiedPrescribed() override
   {
-    for (Vec* x : {&_reduced, &_full, &_full_prev})
-      VecDestroy(x);
+    VecDestroy(&_reduced);
+    VecDestroy(&_scratch);
+    for (Vec& x : _full)
+      VecDestroy(&x);
   }
   TiedPrescribed(const TiedPrescribed&) = delete;
   TiedPrescribed& operator=(const TiedPrescribed&) = delete;
   const std::vector<PetscInt>& rows() const override { return _rows; }
-  void values(int n_next, Vec u_n, Vec u_prev, std::span<double> out) override
+  void values(int n_next, const dynamics::Kinematics& now,
+              const dynamics::Kinematics& prev,
+              dynamics::PrescribedValues& out) override
   {
-    MatMult(_P, u_n, _full);
-    MatMult(_P, u_prev, _full_prev);
-    _inner->values(n_next, _full, _full_prev, _inner_values);
-    to_reduced(_inner_values);
-    VecGetValues(_reduced, static_cast<PetscInt>(_rows.size()), _rows.data(),
-                 out.data());
+    const std::array<Vec, 6> reduced = {now.u,  now.v,  now.a,
+                                        prev.u, prev.v, prev.a};
+    for (int f = 0; f < 6; ++f)
+      MatMult(_P, reduced[f], _full[f]);
+    _inner->values(n_next, {_full[0], _full[1], _full[2]},
+                   {_full[3], _full[4], _full[5]}, _inner_values);
+    const auto n = static_cast<PetscInt>(_rows.size());
+    for (auto [from, to] : {std::pair{&_inner_values.u, &out.u},
+                            std::pair{&_inner_values.v, &out.v},
+                            std::pair{&_inner_values.a, &out.a}})
+    {
+      to_reduced(*from);
+      VecGetValues(_reduced, n, _rows.data(), to->data());
+    }
   }
 
 private:
@@ -70,19 +84,20 @@ private:
   void to_reduced(const std::vector<double>& values)
   {
     const std::vector<PetscInt>& rows = _inner->rows();
-    VecSet(_full, 0.0);
-    VecSetValues(_full, static_cast<PetscInt>(rows.size()), rows.data(),
+    VecSet(_scratch, 0.0);
+    VecSetValues(_scratch, static_cast<PetscInt>(rows.size()), rows.data(),
                  values.data(), INSERT_VALUES);
-    VecAssemblyBegin(_full);
-    VecAssemblyEnd(_full);
-    MatMultTranspose(_P, _full, _reduced);
+    VecAssemblyBegin(_scratch);
+    VecAssemblyEnd(_scratch);
+    MatMultTranspose(_P, _scratch, _reduced);
   }
 
-  std::shared_ptr<dynamics::PrescribedDisplacement> _inner;
+  std::shared_ptr<dynamics::PrescribedMotion> _inner;
   Mat _P;
-  Vec _reduced = nullptr, _full = nullptr, _full_prev = nullptr;
+  Vec _reduced = nullptr, _scratch = nullptr;
+  std::array<Vec, 6> _full{}; ///< the full layout's u, v, a at n and n - 1
   std::vector<PetscInt> _rows;
-  std::vector<double> _inner_values;
+  dynamics::PrescribedValues _inner_values;
 };
 } // namespace
 
@@ -154,12 +169,12 @@ TransmittingFoundation::TransmittingFoundation(
 namespace
 {
 /// The formula on the motion from a static displacement u_s: the values
-/// of u - u_s, plus u_s (the nonlinear engine's state is total).
-class FromStatic : public dynamics::PrescribedDisplacement
+/// of u - u_s, plus u_s (the nonlinear engine's state is total; u_s has
+/// no velocity or acceleration).
+class FromStatic : public dynamics::PrescribedMotion
 {
 public:
-  FromStatic(std::shared_ptr<dynamics::PrescribedDisplacement> mtf,
-             Vec u_static)
+  FromStatic(std::shared_ptr<dynamics::PrescribedMotion> mtf, Vec u_static)
       : _mtf(std::move(mtf))
   {
     for (Vec* x : {&_us, &_now, &_prev})
@@ -178,17 +193,19 @@ public:
   FromStatic(const FromStatic&) = delete;
   FromStatic& operator=(const FromStatic&) = delete;
   const std::vector<PetscInt>& rows() const override { return _mtf->rows(); }
-  void values(int n_next, Vec u_n, Vec u_prev, std::span<double> out) override
+  void values(int n_next, const dynamics::Kinematics& now,
+              const dynamics::Kinematics& prev,
+              dynamics::PrescribedValues& out) override
   {
-    VecWAXPY(_now, -1.0, _us, u_n);
-    VecWAXPY(_prev, -1.0, _us, u_prev);
-    _mtf->values(n_next, _now, _prev, out);
-    for (std::size_t i = 0; i < out.size(); ++i)
-      out[i] += _static[i];
+    VecWAXPY(_now, -1.0, _us, now.u);
+    VecWAXPY(_prev, -1.0, _us, prev.u);
+    _mtf->values(n_next, {_now, now.v, now.a}, {_prev, prev.v, prev.a}, out);
+    for (std::size_t i = 0; i < out.u.size(); ++i)
+      out.u[i] += _static[i];
   }
 
 private:
-  std::shared_ptr<dynamics::PrescribedDisplacement> _mtf;
+  std::shared_ptr<dynamics::PrescribedMotion> _mtf;
   Vec _us = nullptr, _now = nullptr, _prev = nullptr;
   std::vector<double> _static;
 };

@@ -73,7 +73,7 @@ private:
   Mat _tie = nullptr;
   std::shared_ptr<fem::MtfBoundary> _mtf;
   /// The formula on the system's unknowns (_mtf itself without a tie).
-  std::shared_ptr<dynamics::PrescribedDisplacement> _prescribed;
+  std::shared_ptr<dynamics::PrescribedMotion> _prescribed;
   double _omega = 0.0;      ///< the band's highest circular frequency
   double _b_explicit = 0.0; ///< the band's stiffness damping b_E [s]
   double _stable_dt = 0.0;  ///< set by stepper()

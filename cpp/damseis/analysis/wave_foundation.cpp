@@ -28,13 +28,12 @@ separated_field(std::shared_ptr<const boundary::FreeField> field,
                 const geometry::GroundSurface& ground, double dt)
 {
   return [field, &ground, dt](const std::array<double, 3>& x, bool bottom,
-                              double t) -> std::array<double, 3>
+                              double t) -> boundary::FreeFieldState
   {
     if (bottom)
       return field->incident(x, t);
-    return field
-        ->at(x, ground.height(x), static_cast<int>(std::lround(t / dt)), t)
-        .u;
+    return field->at(x, ground.height(x), static_cast<int>(std::lround(t / dt)),
+                     t);
   };
 }
 } // namespace damseis::analysis

@@ -45,9 +45,15 @@ SampledMotion::SampledMotion(std::vector<double> a, double dt, double t_start)
   }
 }
 
-std::size_t SampledMotion::interval(double t, double& tau) const
+double SampledMotion::samples(double t) const
 {
   const double s = (t - _t0) / _dt;
+  const double nearest = std::round(s);
+  return std::abs(s - nearest) < 1e-9 ? nearest : s;
+}
+
+std::size_t SampledMotion::interval(double s, double& tau) const
+{
   const std::size_t last = _a.size() - 1;
   std::size_t k = static_cast<std::size_t>(std::floor(s));
   if (k >= last)
@@ -61,10 +67,11 @@ std::size_t SampledMotion::interval(double t, double& tau) const
 
 double SampledMotion::acceleration(double t) const
 {
-  if (_a.empty() || t <= _t0)
+  const double s = samples(t);
+  if (_a.empty() || s <= 0.0)
     return 0.0;
   double tau = 0.0;
-  const std::size_t k = interval(t, tau);
+  const std::size_t k = interval(s, tau);
   if (k + 1 >= _a.size())
     return tau == 0.0 ? _a[k] : 0.0;
   return _a[k] + (_a[k + 1] - _a[k]) * tau / _dt;
@@ -72,10 +79,11 @@ double SampledMotion::acceleration(double t) const
 
 double SampledMotion::velocity(double t) const
 {
-  if (_a.empty() || t <= _t0)
+  const double s = samples(t);
+  if (_a.empty() || s <= 0.0)
     return 0.0;
   double tau = 0.0;
-  const std::size_t k = interval(t, tau);
+  const std::size_t k = interval(s, tau);
   if (k + 1 >= _a.size())
     return _v[k];
   const double da = (_a[k + 1] - _a[k]) / _dt;
@@ -84,10 +92,11 @@ double SampledMotion::velocity(double t) const
 
 double SampledMotion::displacement(double t) const
 {
-  if (_a.empty() || t <= _t0)
+  const double s = samples(t);
+  if (_a.empty() || s <= 0.0)
     return 0.0;
   double tau = 0.0;
-  const std::size_t k = interval(t, tau);
+  const std::size_t k = interval(s, tau);
   if (k + 1 >= _a.size())
     return _d[k] + _v[k] * tau;
   const double da = (_a[k + 1] - _a[k]) / _dt;
@@ -164,21 +173,28 @@ std::string VerticalFreeField::description() const
          std::to_string(_rock.cp()) + " m/s)";
 }
 
-std::array<double, 3> FreeField::incident(const std::array<double, 3>&,
-                                          double) const
+FreeFieldState FreeField::incident(const std::array<double, 3>&, double) const
 {
   throw std::logic_error("this free field does not give its incident wave "
                          "alone (a transmitting boundary needs it)");
 }
 
-std::array<double, 3>
-VerticalFreeField::incident(const std::array<double, 3>& x, double t) const
+FreeFieldState VerticalFreeField::incident(const std::array<double, 3>& x,
+                                           double t) const
 {
-  std::array<double, 3> u{};
+  FreeFieldState s;
   for (int i = 0; i < _dim; ++i)
-    if (!_incident[i].empty())
-      u[i] = _incident[i].displacement(arrivals(x[_dim - 1], _zs, t, i).up);
-  return u;
+  {
+    const SampledMotion& w = _incident[i];
+    if (w.empty())
+      continue;
+    const double t_up = arrivals(x[_dim - 1], _zs, t, i).up;
+    s.u[i] = w.displacement(t_up);
+    s.v[i] = w.velocity(t_up);
+    s.a[i] = w.acceleration(t_up);
+    s.s[i] = -_rock.rho * speed(i) * s.v[i];
+  }
+  return s;
 }
 
 std::string SideBySideFreeField::description() const
@@ -208,6 +224,7 @@ FreeFieldState VerticalFreeField::at(double z, double zs, double t) const
     s.u[i] = w.displacement(t_up) + w.displacement(t_dn);
     const double v_up = w.velocity(t_up), v_dn = w.velocity(t_dn);
     s.v[i] = v_up + v_dn;
+    s.a[i] = w.acceleration(t_up) + w.acceleration(t_dn);
     s.s[i] = _rock.rho * speed(i) * (v_dn - v_up);
   }
   return s;

@@ -40,7 +40,9 @@ class SampledMotion
 {
 public:
   SampledMotion() = default;
-  /// From rest at t = t_start: a(t_start + k dt) = a[k].
+  /// From rest at t = t_start: a(t_start + k dt) = a[k] for k >= 1 (at
+  /// t_start itself the rest before it: a record whose first sample is
+  /// not zero jumps just after it).
   SampledMotion(std::vector<double> a, double dt, double t_start = 0.0);
   double displacement(double t) const;
   double velocity(double t) const;
@@ -48,18 +50,24 @@ public:
   bool empty() const { return _a.empty(); }
 
 private:
-  /// The sample interval of t and the time into it.
-  std::size_t interval(double t, double& tau) const;
+  /// (t - t_start) / dt, snapped to a sample within 1e-9 of an interval:
+  /// the acceleration jumps at a record's first sample (and after its
+  /// last), and the same point whose coordinates differ in their last bits
+  /// (a mesh partitioned otherwise) must not fall on the jump's other side.
+  double samples(double t) const;
+  /// The sample interval of s = samples(t) >= 0 and the time into it.
+  std::size_t interval(double s, double& tau) const;
   std::vector<double> _a, _v, _d;
   double _dt = 0.0, _t0 = 0.0;
 };
 
-/// The state of the free field at a point: displacement, velocity and the
-/// stresses on horizontal planes, per component (the last component is
-/// the vertical one): s[i] = sigma_{i,z} (s[dim-1] = sigma_zz).
+/// The state of the free field at a point: displacement, velocity,
+/// acceleration and the stresses on horizontal planes, per component (the
+/// last component is the vertical one): s[i] = sigma_{i,z} (s[dim-1] =
+/// sigma_zz).
 struct FreeFieldState
 {
-  std::array<double, 3> u{}, v{}, s{};
+  std::array<double, 3> u{}, v{}, a{}, s{};
 };
 
 /// A free field as the finite element load reads it at its nodes.
@@ -78,10 +86,11 @@ public:
     return at(x, z_ground, k, t).v;
   }
   /// The up-going incident wave alone at x, time t (the known field at
-  /// the bottom of a transmitting boundary); throws std::logic_error for a
-  /// field that does not separate it.
-  virtual std::array<double, 3> incident(const std::array<double, 3>& x,
-                                         double t) const;
+  /// the bottom of a transmitting boundary; its stress that of the wave
+  /// alone); throws std::logic_error for a field that does not separate
+  /// it.
+  virtual FreeFieldState incident(const std::array<double, 3>& x,
+                                  double t) const;
   /// How much later the free surface moves than the outcrop record [s].
   virtual double surface_delay() const = 0;
   /// Whether the record of component i was baseline corrected.
@@ -133,8 +142,8 @@ public:
   {
     return velocity(x[_dim - 1], z_ground, t);
   }
-  std::array<double, 3> incident(const std::array<double, 3>& x,
-                                 double t) const override;
+  FreeFieldState incident(const std::array<double, 3>& x,
+                          double t) const override;
   std::string description() const override;
 
   /// The state at height z (<= z_surface; above it, the surface's) and
@@ -194,8 +203,8 @@ public:
   {
     return (x[0] < _x ? *_left : *_right).velocity(x, z_ground, k, t);
   }
-  std::array<double, 3> incident(const std::array<double, 3>& x,
-                                 double t) const override
+  FreeFieldState incident(const std::array<double, 3>& x,
+                          double t) const override
   {
     return (x[0] < _x ? *_left : *_right).incident(x, t);
   }

@@ -133,6 +133,7 @@ void LayeredColumn::solve(int c, const std::vector<double>& modulus,
     {
       _u[c][static_cast<std::size_t>(k) * n + i] = u[i];
       _v[c][static_cast<std::size_t>(k) * n + i] = v[i];
+      _a[c][static_cast<std::size_t>(k) * n + i] = a[i];
       // Nodal stress: the mean of the adjacent elements' (0 at the top).
       double s = 0.0;
       if (i + 1 < n)
@@ -150,6 +151,7 @@ void LayeredColumn::solve(int c, const std::vector<double>& modulus,
   const std::size_t size = static_cast<std::size_t>(_steps + 1) * n;
   _u[c].assign(size, 0.0);
   _v[c].assign(size, 0.0);
+  _a[c].assign(size, 0.0);
   _s[c].assign(size, 0.0);
   store(0);
   for (int k = 0; k < _steps; ++k)
@@ -188,6 +190,7 @@ FreeFieldState LayeredColumn::at(double z, int k) const
     { return (1 - w) * x[base + e] + w * x[base + e + 1]; };
     s.u[c] = lerp(_u[c]);
     s.v[c] = lerp(_v[c]);
+    s.a[c] = lerp(_a[c]);
     s.s[c] = lerp(_s[c]);
   }
   return s;

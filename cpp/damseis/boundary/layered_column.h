@@ -61,9 +61,10 @@ public:
 private:
   std::vector<double> _z; ///< node heights
   int _dim, _steps, _m = 1;
-  /// Per component, per step, per node: u, v and the stress sigma_{i,z}
-  /// (nodal: the mean of the adjacent elements; 0 at the free surface).
-  std::array<std::vector<double>, 3> _u, _v, _s;
+  /// Per component, per step, per node: u, v, a and the stress
+  /// sigma_{i,z} (nodal: the mean of the adjacent elements; 0 at the free
+  /// surface).
+  std::array<std::vector<double>, 3> _u, _v, _a, _s;
   std::array<bool, 3> _active{}, _corrected{};
   double _delay = 0.0; ///< the layers' S travel time
   std::size_t _layers = 0;

@@ -342,8 +342,10 @@ NonlinearNewmark::NonlinearNewmark(Mat M, Mat K0, RayleighDamping damping,
     throw std::invalid_argument("time step must be positive");
   if (!(scheme.alpha >= -1.0 / 3.0 - 1e-14 && scheme.alpha <= 0.0))
     throw std::invalid_argument("HHT alpha must lie in [-1/3, 0]");
-  for (Vec* x : {&_u, &_v, &_a, &_f, &_fint, &_ut, &_vt, &_at, &_fint_t, &_r,
-                 &_g, &_w1, &_w2, &_du, &_tmp, &_u_prev, &_u_start, &_d_p})
+  for (Vec* x : {&_u,       &_v,       &_a,       &_f,      &_fint,   &_ut,
+                 &_vt,      &_at,      &_fint_t,  &_r,      &_g,      &_w1,
+                 &_w2,      &_du,      &_tmp,     &_u_prev, &_v_prev, &_a_prev,
+                 &_u_start, &_v_start, &_a_start, &_d_p})
   {
     MatCreateVecs(K0, x, nullptr);
     VecSet(*x, 0.0);
@@ -358,8 +360,10 @@ NonlinearNewmark::NonlinearNewmark(Mat M, Mat K0, RayleighDamping damping,
 
 NonlinearNewmark::~NonlinearNewmark()
 {
-  for (Vec* x : {&_u, &_v, &_a, &_f, &_fint, &_ut, &_vt, &_at, &_fint_t, &_r,
-                 &_g, &_w1, &_w2, &_du, &_tmp, &_u_prev, &_u_start, &_d_p})
+  for (Vec* x : {&_u,       &_v,       &_a,       &_f,      &_fint,   &_ut,
+                 &_vt,      &_at,      &_fint_t,  &_r,      &_g,      &_w1,
+                 &_w2,      &_du,      &_tmp,     &_u_prev, &_v_prev, &_a_prev,
+                 &_u_start, &_v_start, &_a_start, &_d_p})
   {
     VecDestroy(x);
   }
@@ -446,9 +450,10 @@ void NonlinearNewmark::set_partition(Partition partition)
   _partition = std::move(partition);
   const std::size_t n =
       _partition.prescribed ? _partition.prescribed->rows().size() : 0;
-  _start_values.assign(n, 0.0);
-  _end_values.assign(n, 0.0);
-  _values.assign(n, 0.0);
+  _start_values.resize(n);
+  _end_values.resize(n);
+  _values.resize(n);
+  _predictors.resize(n);
   // The initial matrices again, with the partition.
   for (auto& [level, entry] : _initial)
   {
@@ -460,9 +465,11 @@ void NonlinearNewmark::set_partition(Partition partition)
   initial_solver(0, dummy);
 }
 
-void NonlinearNewmark::set_history(Vec u_prev, int n)
+void NonlinearNewmark::set_history(const Kinematics& prev, int n)
 {
-  VecCopy(u_prev, _u_prev);
+  VecCopy(prev.u, _u_prev);
+  VecCopy(prev.v, _v_prev);
+  VecCopy(prev.a, _a_prev);
   _n = n;
 }
 
@@ -479,10 +486,23 @@ void NonlinearNewmark::set_prescribed(Vec x,
   VecRestoreArray(x, &p);
 }
 
-void NonlinearNewmark::prescribed_values(double theta)
+void NonlinearNewmark::prescribed_values(double theta, double dt)
 {
-  for (std::size_t i = 0; i < _values.size(); ++i)
-    _values[i] = _start_values[i] + theta * (_end_values[i] - _start_values[i]);
+  auto lerp = [theta](const std::vector<double>& start,
+                      const std::vector<double>& end, std::vector<double>& x)
+  {
+    for (std::size_t i = 0; i < x.size(); ++i)
+      x[i] = start[i] + theta * (end[i] - start[i]);
+  };
+  lerp(_start_values.u, _end_values.u, _values.u);
+  lerp(_start_values.v, _end_values.v, _values.v);
+  lerp(_start_values.a, _end_values.a, _values.a);
+  const double beta = _scheme.beta(), gamma = _scheme.gamma();
+  for (std::size_t i = 0; i < _values.u.size(); ++i)
+  {
+    _predictors.u[i] = _values.u[i] - beta * dt * dt * _values.a[i];
+    _predictors.v[i] = _values.v[i] - gamma * dt * _values.a[i];
+  }
 }
 
 void NonlinearNewmark::correct_velocity(Vec dv)
@@ -498,6 +518,8 @@ void NonlinearNewmark::set_state(Vec u, Vec v, Vec a, Vec f, Vec f_int)
   VecCopy(f, _f);
   VecCopy(f_int, _fint);
   VecCopy(u, _u_prev);
+  VecCopy(v, _v_prev);
+  VecCopy(a, _a_prev);
   _n = 0;
 }
 
@@ -506,16 +528,23 @@ StepReport NonlinearNewmark::step(Vec f_next)
   StepReport report;
   if (_partition.prescribed)
   {
-    // The prescribed displacements at n + 1 from steps n and n - 1.
+    // The prescribed motion at n + 1 from steps n and n - 1, from that of
+    // step n.
     const std::vector<PetscInt>& rows = _partition.prescribed->rows();
-    _partition.prescribed->values(_n + 1, _u, _u_prev, _end_values);
-    VecGetValues(_u, static_cast<PetscInt>(rows.size()), rows.data(),
-                 _start_values.data());
+    _partition.prescribed->values(_n + 1, {_u, _v, _a}, prev(), _end_values);
+    const auto n = static_cast<PetscInt>(rows.size());
+    VecGetValues(_u, n, rows.data(), _start_values.u.data());
+    VecGetValues(_v, n, rows.data(), _start_values.v.data());
+    VecGetValues(_a, n, rows.data(), _start_values.a.data());
   }
   VecCopy(_u, _u_start);
+  VecCopy(_v, _v_start);
+  VecCopy(_a, _a_start);
   _elapsed = 0.0;
   advance(_scheme.dt, f_next, 0, report);
   VecCopy(_u_start, _u_prev);
+  VecCopy(_v_start, _v_prev);
+  VecCopy(_a_start, _a_prev);
   ++_n;
   return report;
 }
@@ -559,6 +588,8 @@ bool NonlinearNewmark::solve_step(double dt, Vec f_next, int level,
                a2 = 1.0 / (beta * dt), a3 = 0.5 / beta - 1.0;
   const double aM = _damping.a_mass, bK = _damping.b_stiffness;
   const linalg::DirectSolver& J0 = initial_solver(level, report);
+  if (_partition.prescribed)
+    prescribed_values((_elapsed + dt) / _scheme.dt, dt);
   if (!_J)
     _J = linalg::duplicate_matrix(_K0, MAT_DO_NOT_COPY_VALUES);
   if (_constraint && _constraint_level != level)
@@ -599,6 +630,8 @@ bool NonlinearNewmark::solve_step(double dt, Vec f_next, int level,
     // The explicit elements' damping on the predicted velocity (alpha =
     // 0): + b_E K_E v~, v~ = v + (1 - gamma) dt a.
     VecWAXPY(_tmp, dt * (1.0 - gamma), _a, _v);
+    if (_partition.prescribed)
+      set_prescribed(_tmp, _predictors.v);
     VecScale(_tmp, _partition.b_explicit);
     MatMultAdd(_partition.K_explicit, _tmp, _g, _g);
   }
@@ -615,6 +648,11 @@ bool NonlinearNewmark::solve_step(double dt, Vec f_next, int level,
     VecCopy(_v, _vt);
     VecAXPY(_vt, dt * (1.0 - gamma), _a);
     VecAXPY(_vt, dt * gamma, _at);
+    if (_partition.prescribed)
+    {
+      set_prescribed(_at, _values.a);
+      set_prescribed(_vt, _values.v);
+    }
   };
   auto residual = [&](Vec ut, Vec R) -> bool
   {
@@ -650,7 +688,7 @@ bool NonlinearNewmark::solve_step(double dt, Vec f_next, int level,
       VecGetValues(ut, static_cast<PetscInt>(rows.size()), rows.data(),
                    r.data());
       for (std::size_t i = 0; i < r.size(); ++i)
-        r[i] -= _values[i];
+        r[i] -= _values.u[i];
       set_prescribed(R, r);
     }
     return true;
@@ -674,12 +712,13 @@ bool NonlinearNewmark::solve_step(double dt, Vec f_next, int level,
   VecWAXPY(_ut, dt, _v, _u);
   VecAXPY(_ut, (0.5 - beta) * dt * dt, _a);
   if (_partition.K_explicit)
-    VecCopy(_ut, _d_p);
-  if (_partition.prescribed)
   {
-    prescribed_values((_elapsed + dt) / _scheme.dt);
-    set_prescribed(_ut, _values);
+    VecCopy(_ut, _d_p);
+    if (_partition.prescribed)
+      set_prescribed(_d_p, _predictors.u);
   }
+  if (_partition.prescribed)
+    set_prescribed(_ut, _values.u);
   if (_settings.extrapolated_predictor && !_constraint &&
       _system.set_extrapolation(true))
   {

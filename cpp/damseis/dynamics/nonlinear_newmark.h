@@ -158,13 +158,13 @@ StepReport solve_static(NonlinearSystem& system, Mat K0, Vec F_from, Vec F_to,
 /// predictor d~ = u + dt v + dt^2 (1/2 - beta) a, so their force K_E d~
 /// replaces K_E u' in f_int(u'); the Rayleigh damping's stiffness part is
 /// b_K K_I (the implicit elements alone); the prescribed unknowns (the
-/// boundary's nodes, explicit alone) take their displacements from
-/// `prescribed` once per step (linearly in time within a cut step), rows
-/// and columns of the effective matrix identity. With explicit elements
-/// average acceleration only (HHT alpha = 0); without them (the band
-/// implicit: only the prescribed unknowns) any HHT alpha, the prescribed
-/// unknowns' velocities and accelerations by Newmark's relations from
-/// their displacements.
+/// boundary's nodes, explicit alone) take their displacements, velocities
+/// and accelerations from `prescribed` once per step (linearly in time
+/// within a cut step), rows and columns of the effective matrix identity;
+/// the explicit elements see d~ = d' - beta dt^2 a', v~ = v' - gamma dt a'
+/// there (as PartitionedNewmark). With explicit elements average
+/// acceleration only (HHT alpha = 0); without them (the band implicit:
+/// only the prescribed unknowns) any HHT alpha.
 struct Partition
 {
   /// The implicit elements' stiffness (zero rows at explicit-only nodes).
@@ -172,7 +172,7 @@ struct Partition
   /// The explicit elements' stiffness, part of f_int (linear there); null
   /// without explicit elements (the band implicit: K_implicit is K).
   Mat K_explicit = nullptr;
-  std::shared_ptr<PrescribedDisplacement> prescribed;
+  std::shared_ptr<PrescribedMotion> prescribed;
   /// b_E [s]: the explicit elements' stiffness-proportional damping
   /// b_E K_E v~ on the predicted velocity (PartitionedNewmark).
   double b_explicit = 0.0;
@@ -205,10 +205,10 @@ public:
   /// matrices must outlive the integrator). Throws std::invalid_argument
   /// with HHT alpha != 0 and explicit elements.
   void set_partition(Partition partition);
-  /// The displacement one step back and the step number n of the state
-  /// (the prescribed displacements' history; set_state sets u and 0).
-  void set_history(Vec u_prev, int n);
-  Vec u_prev() const { return _u_prev; }
+  /// The state one step back and the step number n of the state (the
+  /// prescribed motion's history; set_state sets the state and 0).
+  void set_history(const Kinematics& prev, int n);
+  Kinematics prev() const { return {_u_prev, _v_prev, _a_prev}; }
   /// Changes the velocity of the last step by dv, the displacement and the
   /// acceleration unchanged (the impact correction of joint pairs that
   /// close; as LinearNewmark::correct_velocity).
@@ -231,9 +231,10 @@ private:
   bool solve_step(double dt, Vec f_next, int level, StepReport& report);
   /// The initial effective matrix for a step dt / 2^level, factorised.
   const linalg::DirectSolver& initial_solver(int level, StepReport& report);
-  /// The prescribed rows' displacements at the end of a (sub)step ending
-  /// at the fraction `theta` of the full step (partition only).
-  void prescribed_values(double theta);
+  /// The prescribed rows' motion at the end of a (sub)step of length dt
+  /// ending at the fraction `theta` of the full step, and the predictors
+  /// d~ = d' - beta dt^2 a', v~ = v' - gamma dt a' there (partition only).
+  void prescribed_values(double theta, double dt);
   /// x[rows] = values (owned rows).
   void set_prescribed(Vec x, const std::vector<double>& values) const;
 
@@ -259,14 +260,17 @@ private:
   std::unique_ptr<TangentSolver> _tangent_solver;
   Vec _u = nullptr, _v = nullptr, _a = nullptr, _f = nullptr, _fint = nullptr;
   Partition _partition;
-  /// The partition's history: u one step back, the step number, the state
-  /// at the start of the full step, the time of it done (cut steps), the
-  /// prescribed rows' values at its start and end, and of the (sub)step
-  /// being solved.
-  Vec _u_prev = nullptr, _u_start = nullptr, _d_p = nullptr;
+  /// The partition's history: the state one step back, the step number,
+  /// the state at the start of the full step, the explicit elements'
+  /// predictor, the time of the full step done (cut steps), the prescribed
+  /// rows' motion at its start and end, and of the (sub)step being solved
+  /// with its predictors (u: d~, v: v~).
+  Vec _u_prev = nullptr, _v_prev = nullptr, _a_prev = nullptr;
+  Vec _u_start = nullptr, _v_start = nullptr, _a_start = nullptr;
+  Vec _d_p = nullptr;
   int _n = 0;
   double _elapsed = 0.0;
-  std::vector<double> _start_values, _end_values, _values;
+  PrescribedValues _start_values, _end_values, _values, _predictors;
   // Work vectors.
   Vec _ut = nullptr, _vt = nullptr, _at = nullptr, _fint_t = nullptr,
       _r = nullptr, _g = nullptr, _w1 = nullptr, _w2 = nullptr, _du = nullptr,

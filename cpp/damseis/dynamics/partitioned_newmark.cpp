@@ -138,7 +138,7 @@ double highest_explicit_frequency(Mat K, Mat K_implicit, Vec lumped,
 PartitionedNewmark::PartitionedNewmark(
     Mat M, Mat K, Mat K_implicit, RayleighDamping damping, double dt,
     linalg::Factorization factorization,
-    std::shared_ptr<PrescribedDisplacement> prescribed, double b_explicit)
+    std::shared_ptr<PrescribedMotion> prescribed, double b_explicit)
     : _M(M), _K(K), _K_implicit(K_implicit), _damping(damping),
       _b_explicit(b_explicit), _dt(dt), _prescribed(std::move(prescribed))
 {
@@ -184,8 +184,9 @@ PartitionedNewmark::PartitionedNewmark(
   _solver = std::make_unique<linalg::DirectSolver>(comm, factorization);
   _solver->factorize(_A);
 
-  for (Vec* x : {&_u, &_v, &_a, &_f, &_u_prev, &_d_p, &_v_p, &_rhs, &_Mv, &_Ku,
-                 &_Ma, &_Kv, &_Kev, &_w, &_cv, &_r, &_du, &_mask})
+  for (Vec* x : {&_u,   &_v,   &_a,   &_f,  &_u_prev, &_v_prev, &_a_prev,
+                 &_d_p, &_v_p, &_rhs, &_Mv, &_Ku,     &_Ma,     &_Kv,
+                 &_Kev, &_w,   &_cv,  &_r,  &_du,     &_mask})
   {
     MatCreateVecs(K, x, nullptr);
     VecSet(*x, 0.0);
@@ -199,21 +200,24 @@ PartitionedNewmark::PartitionedNewmark(
 
 PartitionedNewmark::~PartitionedNewmark()
 {
-  for (Vec* x : {&_u, &_v, &_a, &_f, &_u_prev, &_d_p, &_v_p, &_rhs, &_Mv, &_Ku,
-                 &_Ma, &_Kv, &_Kev, &_w, &_cv, &_r, &_du, &_mask})
+  for (Vec* x : {&_u,   &_v,   &_a,   &_f,  &_u_prev, &_v_prev, &_a_prev,
+                 &_d_p, &_v_p, &_rhs, &_Mv, &_Ku,     &_Ma,     &_Kv,
+                 &_Kev, &_w,   &_cv,  &_r,  &_du,     &_mask})
     VecDestroy(x);
   MatDestroy(&_A);
   MatDestroy(&_A_lift);
 }
 
-void PartitionedNewmark::set_state(Vec u, Vec v, Vec a, Vec f, Vec u_prev,
-                                   int n)
+void PartitionedNewmark::set_state(Vec u, Vec v, Vec a, Vec f,
+                                   const Kinematics& prev, int n)
 {
   VecCopy(u, _u);
   VecCopy(v, _v);
   VecCopy(a, _a);
   VecCopy(f, _f);
-  VecCopy(u_prev ? u_prev : u, _u_prev);
+  VecCopy(prev.u ? prev.u : u, _u_prev);
+  VecCopy(prev.v ? prev.v : v, _v_prev);
+  VecCopy(prev.a ? prev.a : a, _a_prev);
   _n = n;
   MatMult(_M, _v, _Mv);
   MatMult(_K_implicit, _v, _Kv);
@@ -253,17 +257,41 @@ void PartitionedNewmark::update_energies()
   _energy.strain = 0.5 * uKu;
 }
 
+void PartitionedNewmark::set_prescribed_predictors()
+{
+  const std::vector<PetscInt>& rows = _prescribed->rows();
+  const auto n = static_cast<PetscInt>(rows.size());
+  std::vector<double> d(rows.size()), v(rows.size());
+  for (std::size_t i = 0; i < rows.size(); ++i)
+  {
+    d[i] = _values.u[i] - _beta * _dt * _dt * _values.a[i];
+    v[i] = _values.v[i] - _gamma * _dt * _values.a[i];
+  }
+  VecSetValues(_d_p, n, rows.data(), d.data(), INSERT_VALUES);
+  VecSetValues(_v_p, n, rows.data(), v.data(), INSERT_VALUES);
+  for (Vec x : {_d_p, _v_p})
+  {
+    VecAssemblyBegin(x);
+    VecAssemblyEnd(x);
+  }
+}
+
 void PartitionedNewmark::step(Vec f_next)
 {
   const double dt = _dt, bdt2 = _beta * dt * dt, gdt = _gamma * dt;
-  // The predictors.
+  // The prescribed motion at n + 1 from steps n and n - 1.
+  if (_prescribed)
+    _prescribed->values(_n + 1, {_u, _v, _a}, prev(), _values);
+  // The predictors; at the prescribed rows those the updates take to the
+  // prescribed motion.
   VecWAXPY(_d_p, dt, _v, _u);
   VecAXPY(_d_p, (0.5 - _beta) * dt * dt, _a);
   VecWAXPY(_v_p, (1.0 - _gamma) * dt, _a, _v);
-  // The prescribed displacements at n + 1 from steps n and n - 1.
   if (_prescribed)
-    _prescribed->values(_n + 1, _u, _u_prev, _values);
+    set_prescribed_predictors();
   VecCopy(_u, _u_prev);
+  VecCopy(_v, _v_prev);
+  VecCopy(_a, _a_prev);
   VecCopy(_u, _du); // the step's start, for the energy balance
 
   // rhs = f' - a_M M v~ - b_K K_I v~ - b_E K_E v~ - K d~ (M v~, K_I v~,
@@ -282,11 +310,7 @@ void PartitionedNewmark::step(Vec f_next)
   if (_prescribed)
   {
     const std::vector<PetscInt>& rows = _prescribed->rows();
-    std::vector<PetscScalar> d(rows.size()), b(rows.size());
-    VecGetValues(_d_p, static_cast<PetscInt>(rows.size()), rows.data(),
-                 d.data());
-    for (std::size_t i = 0; i < rows.size(); ++i)
-      b[i] = (_values[i] - d[i]) / bdt2;
+    const std::vector<double>& b = _values.a;
     if (_A_lift)
     {
       // rhs -= A x, x the prescribed accelerations (zero elsewhere).

@@ -20,9 +20,11 @@
 // rows of nodes touched by
 // E elements alone are diagonal: explicit. Unknowns with a prescribed
 // displacement (the transmitting boundary's nodes, E nodes) get
-// a_{n+1} = (d_{n+1} - d~) / (beta dt^2); where they are coupled to
-// others (the band implicit: no E group) their columns' terms move to the
-// right-hand side. beta = 1/4, gamma = 1/2.
+// their given displacement, velocity and acceleration: the predictors
+// there are set to d~ = d' - beta dt^2 a', v~ = v' - gamma dt a' and the
+// solution to a', so that the updates land on them; where they are
+// coupled to others (the band implicit: no E group) their columns' terms
+// move to the right-hand side. beta = 1/4, gamma = 1/2.
 //
 // Stability: the I group is unconditionally stable; the E group needs
 // dt <= explicit_stable_step(omega_max of E, {a_M, b_E}) (2 / omega_max
@@ -38,19 +40,42 @@
 
 namespace damseis::dynamics
 {
-/// Displacements prescribed at some unknowns at every step (the nodes of a
-/// transmitting boundary), found from the last two states.
-class PrescribedDisplacement
+/// A state's displacement, velocity and acceleration (global vectors).
+struct Kinematics
+{
+  Vec u = nullptr, v = nullptr, a = nullptr;
+};
+
+/// The prescribed unknowns' displacement, velocity and acceleration, in
+/// the order of PrescribedMotion::rows().
+struct PrescribedValues
+{
+  std::vector<double> u, v, a;
+  void resize(std::size_t n)
+  {
+    for (auto* x : {&u, &v, &a})
+      x->assign(n, 0.0);
+  }
+};
+
+/// The motion prescribed at some unknowns at every step (the nodes of a
+/// transmitting boundary), found from the last two states. The
+/// integrators give these unknowns the prescribed displacement, velocity
+/// and acceleration all three (their neighbours' equations see them), not
+/// the velocity and acceleration Newmark's relations would derive from the
+/// displacements alone: with average acceleration those relations carry
+/// an undamped alternating mode (for a fixed displacement v_(n+1) = -v_n),
+/// whose acceleration grows linearly with the steps.
+class PrescribedMotion
 {
 public:
-  virtual ~PrescribedDisplacement() = default;
+  virtual ~PrescribedMotion() = default;
   /// The prescribed unknowns this rank owns (global rows).
   virtual const std::vector<PetscInt>& rows() const = 0;
-  /// Their displacements at step n + 1 (t = (n + 1) dt), in the order of
-  /// rows(), from the displacement at step n and at step n - 1
-  /// (collective).
-  virtual void values(int n_next, Vec u_n, Vec u_prev,
-                      std::span<double> out) = 0;
+  /// Their motion at step n + 1 (t = (n + 1) dt) from the state at step n
+  /// and at step n - 1 (collective).
+  virtual void values(int n_next, const Kinematics& now, const Kinematics& prev,
+                      PrescribedValues& out) = 0;
 };
 
 /// The largest step for which the explicit group of a partition (mass-
@@ -81,26 +106,25 @@ public:
   /// elements' (its rows at E-only nodes zero). Fixed dofs as identity
   /// rows of K and K_implicit and zero rows of M with a zero load.
   /// b_explicit: b_E [s]. The matrices must outlive the integrator.
-  PartitionedNewmark(
-      Mat M, Mat K, Mat K_implicit, RayleighDamping damping, double dt,
-      linalg::Factorization factorization,
-      std::shared_ptr<PrescribedDisplacement> prescribed = nullptr,
-      double b_explicit = 0.0);
+  PartitionedNewmark(Mat M, Mat K, Mat K_implicit, RayleighDamping damping,
+                     double dt, linalg::Factorization factorization,
+                     std::shared_ptr<PrescribedMotion> prescribed = nullptr,
+                     double b_explicit = 0.0);
   ~PartitionedNewmark();
   PartitionedNewmark(const PartitionedNewmark&) = delete;
   PartitionedNewmark& operator=(const PartitionedNewmark&) = delete;
 
-  /// The state at the current step n (copied): u, v, a, the load f, and
-  /// the displacement of step n - 1 (null: u), and the step number n.
-  void set_state(Vec u, Vec v, Vec a, Vec f, Vec u_prev, int n);
+  /// The state at the current step n (copied): u, v, a, the load f, the
+  /// state of step n - 1 (null members: step n's), and the step number n.
+  void set_state(Vec u, Vec v, Vec a, Vec f, const Kinematics& prev, int n);
   /// Advances one step to the load f_next = f(t + dt).
   void step(Vec f_next);
 
   Vec u() const { return _u; }
   Vec v() const { return _v; }
   Vec a() const { return _a; }
-  /// The displacement one step back (the transmitting boundary's history).
-  Vec u_prev() const { return _u_prev; }
+  /// The state one step back (the transmitting boundary's history).
+  Kinematics prev() const { return {_u_prev, _v_prev, _a_prev}; }
   /// The energy balance since the start; constraint_work is the work of
   /// the prescribed unknowns' reactions (the energy the boundary let in,
   /// negative where it radiates energy out).
@@ -112,6 +136,8 @@ public:
 private:
   /// M x, K x and the reaction at the prescribed rows for the state.
   void update_images();
+  /// d~ = d' - beta dt^2 a', v~ = v' - gamma dt a' at the prescribed rows.
+  void set_prescribed_predictors();
   void update_energies();
 
   Mat _M, _K, _K_implicit;
@@ -124,10 +150,11 @@ private:
   /// coupled to others (null: none are).
   Mat _A_lift = nullptr;
   std::unique_ptr<linalg::DirectSolver> _solver;
-  std::shared_ptr<PrescribedDisplacement> _prescribed;
-  std::vector<double> _values;
+  std::shared_ptr<PrescribedMotion> _prescribed;
+  PrescribedValues _values;
   int _n = 0;
-  Vec _u = nullptr, _v = nullptr, _a = nullptr, _f = nullptr, _u_prev = nullptr;
+  Vec _u = nullptr, _v = nullptr, _a = nullptr, _f = nullptr;
+  Vec _u_prev = nullptr, _v_prev = nullptr, _a_prev = nullptr;
   /// Work: predictors, right-hand side, images M v, K u, M a, K_I v,
   /// K_E v.
   Vec _d_p = nullptr, _v_p = nullptr, _rhs = nullptr, _Mv = nullptr,

@@ -6,17 +6,18 @@ namespace damseis::engine
 namespace
 {
 using dolfinx::la::petsc::Vector;
-const std::array<const char*, 4> state_names = {"u", "v", "a", "u_prev"};
+const std::array<const char*, 6> state_names = {"u",      "v",      "a",
+                                                "u_prev", "v_prev", "a_prev"};
 } // namespace
 
 PartitionedStepper::PartitionedStepper(
     Mat M, Mat K, Mat K_implicit, dynamics::RayleighDamping damping, double dt,
     linalg::Factorization factorization,
-    std::shared_ptr<dynamics::PrescribedDisplacement> prescribed,
-    double b_explicit)
+    std::shared_ptr<dynamics::PrescribedMotion> prescribed, double b_explicit)
     : _K(K), _newmark(M, K, K_implicit, damping, dt, factorization,
                       std::move(prescribed), b_explicit),
       _restored{Vector(nullptr, false), Vector(nullptr, false),
+                Vector(nullptr, false), Vector(nullptr, false),
                 Vector(nullptr, false), Vector(nullptr, false)}
 {
 }
@@ -32,8 +33,7 @@ Vec PartitionedStepper::create_vector() const
 void PartitionedStepper::start(Vec u0, Vec v0, Vec a0, Vec f0)
 {
   Vector zero(create_vector(), false);
-  _newmark.set_state(u0 ? u0 : zero.vec(), v0 ? v0 : zero.vec(), a0, f0,
-                     nullptr, 0);
+  _newmark.set_state(u0 ? u0 : zero.vec(), v0 ? v0 : zero.vec(), a0, f0, {}, 0);
   _step = 0;
 }
 
@@ -46,8 +46,9 @@ dynamics::StepReport PartitionedStepper::step(Vec f)
 
 void PartitionedStepper::save(Arrays& arrays) const
 {
-  const std::array<Vec, 4> x = {u(), v(), a(), _newmark.u_prev()};
-  for (int i = 0; i < 4; ++i)
+  const dynamics::Kinematics prev = _newmark.prev();
+  const std::array<Vec, 6> x = {u(), v(), a(), prev.u, prev.v, prev.a};
+  for (int i = 0; i < 6; ++i)
     arrays[state_names[i]] = linalg::owned_values(x[i]);
   const dynamics::EnergyBalance& e = _newmark.energy();
   arrays["energy"] = {e.kinetic0, e.strain0, e.external_work, e.damping,
@@ -57,7 +58,7 @@ void PartitionedStepper::save(Arrays& arrays) const
 
 void PartitionedStepper::restore(const CheckpointData& data)
 {
-  for (int i = 0; i < 4; ++i)
+  for (int i = 0; i < 6; ++i)
   {
     _restored[i] = Vector(create_vector(), false);
     linalg::set_owned_values(_restored[i].vec(),
@@ -77,8 +78,9 @@ void PartitionedStepper::restore(const CheckpointData& data)
 
 void PartitionedStepper::resume(Vec f)
 {
-  _newmark.set_state(_restored[0].vec(), _restored[1].vec(), _restored[2].vec(),
-                     f, _restored[3].vec(), _step);
+  _newmark.set_state(
+      _restored[0].vec(), _restored[1].vec(), _restored[2].vec(), f,
+      {_restored[3].vec(), _restored[4].vec(), _restored[5].vec()}, _step);
   for (auto& x : _restored)
     x = Vector(nullptr, false);
 }

@@ -14,11 +14,11 @@ class PartitionedStepper : public Stepper
 {
 public:
   /// See dynamics::PartitionedNewmark. Runs start at rest.
-  PartitionedStepper(
-      Mat M, Mat K, Mat K_implicit, dynamics::RayleighDamping damping,
-      double dt, linalg::Factorization factorization,
-      std::shared_ptr<dynamics::PrescribedDisplacement> prescribed,
-      double b_explicit = 0.0);
+  PartitionedStepper(Mat M, Mat K, Mat K_implicit,
+                     dynamics::RayleighDamping damping, double dt,
+                     linalg::Factorization factorization,
+                     std::shared_ptr<dynamics::PrescribedMotion> prescribed,
+                     double b_explicit = 0.0);
 
   Vec create_vector() const override;
   void start(Vec u0, Vec v0, Vec a0, Vec f0) override;
@@ -42,6 +42,6 @@ private:
   int _step = 0; ///< the step of the state
   /// u, v, a and the displacement one step back, read from a checkpoint
   /// until resume().
-  std::array<dolfinx::la::petsc::Vector, 4> _restored;
+  std::array<dolfinx::la::petsc::Vector, 6> _restored;
 };
 } // namespace damseis::engine

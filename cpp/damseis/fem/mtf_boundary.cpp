@@ -456,9 +456,9 @@ MtfBoundary::MtfBoundary(const dolfinx::fem::FunctionSpace& V,
   IS from;
   ISCreateGeneral(PETSC_COMM_SELF, static_cast<PetscInt>(gathered.size()),
                   gathered.data(), PETSC_COPY_VALUES, &from);
-  VecCreateSeq(PETSC_COMM_SELF, static_cast<PetscInt>(gathered.size()), &_now);
-  VecDuplicate(_now, &_prev);
-  VecScatterCreate(layout_vec, from, _now, nullptr, &_scatter);
+  for (Vec& x : _gathered)
+    VecCreateSeq(PETSC_COMM_SELF, static_cast<PetscInt>(gathered.size()), &x);
+  VecScatterCreate(layout_vec, from, _gathered[0], nullptr, &_scatter);
   ISDestroy(&from);
   VecDestroy(&layout_vec);
 }
@@ -466,66 +466,81 @@ MtfBoundary::MtfBoundary(const dolfinx::fem::FunctionSpace& V,
 MtfBoundary::~MtfBoundary()
 {
   VecScatterDestroy(&_scatter);
-  VecDestroy(&_now);
-  VecDestroy(&_prev);
+  for (Vec& x : _gathered)
+    VecDestroy(&x);
 }
 
-void MtfBoundary::values(int n_next, Vec u_n, Vec u_prev, std::span<double> out)
+void MtfBoundary::values(int n_next, const dynamics::Kinematics& now,
+                         const dynamics::Kinematics& prev,
+                         dynamics::PrescribedValues& out)
 {
-  for (auto [from, to] : {std::pair{u_n, _now}, std::pair{u_prev, _prev}})
+  // The stencils' u, v, a at steps n (0-2) and n - 1 (3-5).
+  const std::array<Vec, 6> fields = {now.u,  now.v,  now.a,
+                                     prev.u, prev.v, prev.a};
+  std::array<const double*, 6> gathered{};
+  for (int f = 0; f < 6; ++f)
   {
-    VecScatterBegin(_scatter, from, to, INSERT_VALUES, SCATTER_FORWARD);
-    VecScatterEnd(_scatter, from, to, INSERT_VALUES, SCATTER_FORWARD);
+    VecScatterBegin(_scatter, fields[f], _gathered[f], INSERT_VALUES,
+                    SCATTER_FORWARD);
+    VecScatterEnd(_scatter, fields[f], _gathered[f], INSERT_VALUES,
+                  SCATTER_FORWARD);
+    VecGetArrayRead(_gathered[f], &gathered[f]);
   }
-  const double* now = nullptr;
-  const double* prev = nullptr;
-  VecGetArrayRead(_now, &now);
-  VecGetArrayRead(_prev, &prev);
   const int width = _normal.stencil(), order = _normal.order();
   const double dt = _s.dt, dx = _s.spacing;
   const double t = n_next * dt;
+  std::array<std::vector<double>*, 3> results = {&out.u, &out.v, &out.a};
   for (std::size_t i = 0; i < _nodes.size(); ++i)
   {
     const Node& node = _nodes[i];
-    // u_0 = u_in(x_0, t_(n+1)) + sum_j sum_k w_jk (u - u_in)(x_k, t_(n+1-j))
-    // for the normal and the tangential formula's weights.
-    std::array<double, 3> normal{}, tangential{};
+    // Per derivative q (u, v, a): x_0 = x_in(x_0, t_(n+1)) + sum_j sum_k
+    // w_jk (x - x_in)(x_k, t_(n+1-j)) for the normal and the tangential
+    // formula's weights.
+    std::array<std::array<double, 3>, 3> normal{}, tangential{};
     for (int j = 1; j <= order; ++j)
-    {
-      const double* history = j == 1 ? now : prev;
       for (int k = 0; k <= 2 * j; ++k)
       {
         Point p = node.x;
         for (int d = 0; d < 3; ++d)
           p[d] -= k * dx * node.normal[d];
-        const std::array<double, 3> in = _known(p, node.bottom, t - j * dt);
-        std::array<double, 3> v{};
+        const boundary::FreeFieldState in = _known(p, node.bottom, t - j * dt);
+        const std::array<const std::array<double, 3>*, 3> known = {&in.u, &in.v,
+                                                                   &in.a};
         const std::size_t at = i * width + k;
-        for (std::int32_t e = _offsets[at]; e < _offsets[at + 1]; ++e)
-          for (int c = 0; c < _dim; ++c)
-            v[c] += _weights[e] * history[_positions[e] * _dim + c];
         const double wn = _normal.weight(j, k), wt = _tangential.weight(j, k);
-        for (int c = 0; c < _dim; ++c)
+        for (int q = 0; q < 3; ++q)
         {
-          const double scattered = v[c] - in[c];
-          normal[c] += wn * scattered;
-          tangential[c] += wt * scattered;
+          const double* history = gathered[q + (j == 1 ? 0 : 3)];
+          std::array<double, 3> x{};
+          for (std::int32_t e = _offsets[at]; e < _offsets[at + 1]; ++e)
+            for (int c = 0; c < _dim; ++c)
+              x[c] += _weights[e] * history[_positions[e] * _dim + c];
+          for (int c = 0; c < _dim; ++c)
+          {
+            const double scattered = x[c] - (*known[q])[c];
+            normal[q][c] += wn * scattered;
+            tangential[q][c] += wt * scattered;
+          }
         }
       }
-    }
-    // u = u_in + n (n . normal-formula) + (I - n n^T) tangential-formula.
-    double along = 0.0, t_along = 0.0;
-    for (int c = 0; c < _dim; ++c)
+    // x = x_in + n (n . normal-formula) + (I - n n^T) tangential-formula.
+    const boundary::FreeFieldState in = _known(node.x, node.bottom, t);
+    const std::array<const std::array<double, 3>*, 3> known = {&in.u, &in.v,
+                                                               &in.a};
+    for (int q = 0; q < 3; ++q)
     {
-      along += node.normal[c] * normal[c];
-      t_along += node.normal[c] * tangential[c];
+      double along = 0.0, t_along = 0.0;
+      for (int c = 0; c < _dim; ++c)
+      {
+        along += node.normal[c] * normal[q][c];
+        t_along += node.normal[c] * tangential[q][c];
+      }
+      for (int c = 0; c < _dim; ++c)
+        (*results[q])[i * _dim + c] = (*known[q])[c] + tangential[q][c] +
+                                      node.normal[c] * (along - t_along);
     }
-    const std::array<double, 3> u = _known(node.x, node.bottom, t);
-    for (int c = 0; c < _dim; ++c)
-      out[i * _dim + c] =
-          u[c] + tangential[c] + node.normal[c] * (along - t_along);
   }
-  VecRestoreArrayRead(_now, &now);
-  VecRestoreArrayRead(_prev, &prev);
+  for (int f = 0; f < 6; ++f)
+    VecRestoreArrayRead(_gathered[f], &gathered[f]);
 }
 } // namespace damseis::fem

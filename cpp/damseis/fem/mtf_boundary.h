@@ -8,6 +8,11 @@
 // points between the layers are not all nodes), and its displacement at
 // the next step is
 //   u_0^(p+1) = u_in(x_0, t_(p+1)) + MTF[u - u_in],
+// and its velocity and acceleration the same formula's on v and a (the
+// formula is linear with constant coefficients: it transmits the time
+// derivatives of what it transmits; Newmark's relations would derive them
+// from the displacements with an undamped alternating mode, see
+// dynamics::PrescribedMotion),
 // the formula applied to each Cartesian component of the field less the
 // known one, with the artificial speed c_p for the part along the normal
 // and c_s for the tangential part (waves leaving at normal incidence are P
@@ -24,6 +29,7 @@
 
 #include <algorithm>
 #include <array>
+#include <damseis/boundary/free_field.h>
 #include <damseis/boundary/mtf.h>
 #include <damseis/dynamics/partitioned_newmark.h>
 #include <dolfinx/fem/FunctionSpace.h>
@@ -52,8 +58,9 @@ struct MtfSettings
 
 /// The known field of the wave-field separation at x (the last coordinate
 /// vertical) and time t: at the bottom (bottom = true) the incident wave,
-/// on the sides the free field.
-using KnownField = std::function<std::array<double, 3>(
+/// on the sides the free field (its displacement, velocity and
+/// acceleration are read).
+using KnownField = std::function<boundary::FreeFieldState(
     const std::array<double, 3>& x, bool bottom, double t)>;
 
 /// Whether the cells `band_cells` hold every stencil point of Liao's
@@ -67,7 +74,7 @@ std::string band_gap(const dolfinx::fem::FunctionSpace& V,
                      const std::vector<std::int32_t>& band_cells, int order,
                      double spacing);
 
-class MtfBoundary : public dynamics::PrescribedDisplacement
+class MtfBoundary : public dynamics::PrescribedMotion
 {
 public:
   /// The nodes of V on the facets tagged `boundary_tags`, their stencils
@@ -84,7 +91,9 @@ public:
   MtfBoundary& operator=(const MtfBoundary&) = delete;
 
   const std::vector<PetscInt>& rows() const override { return _rows; }
-  void values(int n_next, Vec u_n, Vec u_prev, std::span<double> out) override;
+  void values(int n_next, const dynamics::Kinematics& now,
+              const dynamics::Kinematics& prev,
+              dynamics::PrescribedValues& out) override;
   /// The number of boundary nodes (all ranks) and of them on the bottom.
   std::array<std::int64_t, 2> node_counts() const { return _counts; }
   const MtfSettings& settings() const { return _s; }
@@ -113,6 +122,7 @@ private:
   std::vector<double> _weights;
   std::array<std::int64_t, 2> _counts{};
   VecScatter _scatter = nullptr;
-  Vec _now = nullptr, _prev = nullptr;
+  /// The stencils' gathered u, v, a at step n and n - 1.
+  std::array<Vec, 6> _gathered{};
 };
 } // namespace damseis::fem
