@@ -20,21 +20,7 @@ inline double pulse(double A, double T, double t)
                           : A * std::pow(std::sin(std::numbers::pi * t / T), 4);
 }
 
-/// Its acceleration at k dt, k = 0..n.
-inline std::vector<double> pulse_acceleration(double A, double T, double dt,
-                                              int n)
-{
-  std::vector<double> a(n + 1, 0.0);
-  const double w = std::numbers::pi / T;
-  for (int k = 0; k <= n && k * dt < T; ++k)
-  {
-    const double s = std::sin(w * k * dt), c = std::cos(w * k * dt);
-    a[k] = A * w * w * (12 * s * s * c * c - 4 * s * s * s * s);
-  }
-  return a;
-}
-
-/// The pulse's acceleration at time t.
+/// Its acceleration at time t.
 inline double pulse_acceleration(double A, double T, double t)
 {
   if (t <= 0 || t >= T)
@@ -42,6 +28,16 @@ inline double pulse_acceleration(double A, double T, double t)
   const double w = std::numbers::pi / T;
   const double s = std::sin(w * t), c = std::cos(w * t);
   return A * w * w * (12 * s * s * c * c - 4 * s * s * s * s);
+}
+
+/// Its acceleration at k dt, k = 0..n.
+inline std::vector<double> pulse_acceleration(double A, double T, double dt,
+                                              int n)
+{
+  std::vector<double> a(n + 1);
+  for (int k = 0; k <= n; ++k)
+    a[k] = pulse_acceleration(A, T, k * dt);
+  return a;
 }
 
 /// A node of V at p: its values in vectors of V's layout, the node found
