@@ -453,7 +453,6 @@ void NonlinearNewmark::set_partition(Partition partition)
   _start_values.resize(n);
   _end_values.resize(n);
   _values.resize(n);
-  _predictors.resize(n);
   // The initial matrices again, with the partition.
   for (auto& [level, entry] : _initial)
   {
@@ -497,12 +496,8 @@ void NonlinearNewmark::prescribed_values(double theta, double dt)
   lerp(_start_values.u, _end_values.u, _values.u);
   lerp(_start_values.v, _end_values.v, _values.v);
   lerp(_start_values.a, _end_values.a, _values.a);
-  const double beta = _scheme.beta(), gamma = _scheme.gamma();
-  for (std::size_t i = 0; i < _values.u.size(); ++i)
-  {
-    _predictors.u[i] = _values.u[i] - beta * dt * dt * _values.a[i];
-    _predictors.v[i] = _values.v[i] - gamma * dt * _values.a[i];
-  }
+  _values.predictors(_scheme.beta(), _scheme.gamma(), dt, _predicted_d,
+                     _predicted_v);
 }
 
 void NonlinearNewmark::correct_velocity(Vec dv)
@@ -631,7 +626,7 @@ bool NonlinearNewmark::solve_step(double dt, Vec f_next, int level,
     // 0): + b_E K_E v~, v~ = v + (1 - gamma) dt a.
     VecWAXPY(_tmp, dt * (1.0 - gamma), _a, _v);
     if (_partition.prescribed)
-      set_prescribed(_tmp, _predictors.v);
+      set_prescribed(_tmp, _predicted_v);
     VecScale(_tmp, _partition.b_explicit);
     MatMultAdd(_partition.K_explicit, _tmp, _g, _g);
   }
@@ -715,7 +710,7 @@ bool NonlinearNewmark::solve_step(double dt, Vec f_next, int level,
   {
     VecCopy(_ut, _d_p);
     if (_partition.prescribed)
-      set_prescribed(_d_p, _predictors.u);
+      set_prescribed(_d_p, _predicted_d);
   }
   if (_partition.prescribed)
     set_prescribed(_ut, _values.u);

@@ -264,13 +264,14 @@ private:
   /// the state at the start of the full step, the explicit elements'
   /// predictor, the time of the full step done (cut steps), the prescribed
   /// rows' motion at its start and end, and of the (sub)step being solved
-  /// with its predictors (u: d~, v: v~).
+  /// with its predictors d~ and v~.
   Vec _u_prev = nullptr, _v_prev = nullptr, _a_prev = nullptr;
   Vec _u_start = nullptr, _v_start = nullptr, _a_start = nullptr;
   Vec _d_p = nullptr;
   int _n = 0;
   double _elapsed = 0.0;
-  PrescribedValues _start_values, _end_values, _values, _predictors;
+  PrescribedValues _start_values, _end_values, _values;
+  std::vector<double> _predicted_d, _predicted_v;
   // Work vectors.
   Vec _ut = nullptr, _vt = nullptr, _at = nullptr, _fint_t = nullptr,
       _r = nullptr, _g = nullptr, _w1 = nullptr, _w2 = nullptr, _du = nullptr,

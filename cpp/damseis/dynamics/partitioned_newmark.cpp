@@ -261,12 +261,8 @@ void PartitionedNewmark::set_prescribed_predictors()
 {
   const std::vector<PetscInt>& rows = _prescribed->rows();
   const auto n = static_cast<PetscInt>(rows.size());
-  std::vector<double> d(rows.size()), v(rows.size());
-  for (std::size_t i = 0; i < rows.size(); ++i)
-  {
-    d[i] = _values.u[i] - _beta * _dt * _dt * _values.a[i];
-    v[i] = _values.v[i] - _gamma * _dt * _values.a[i];
-  }
+  std::vector<double> d, v;
+  _values.predictors(_beta, _gamma, _dt, d, v);
   VecSetValues(_d_p, n, rows.data(), d.data(), INSERT_VALUES);
   VecSetValues(_v_p, n, rows.data(), v.data(), INSERT_VALUES);
   for (Vec x : {_d_p, _v_p})

@@ -56,6 +56,19 @@ struct PrescribedValues
     for (auto* x : {&u, &v, &a})
       x->assign(n, 0.0);
   }
+  /// The predictors from which Newmark's updates over dt land on these
+  /// values: d~ = u - beta dt^2 a, v~ = v - gamma dt a.
+  void predictors(double beta, double gamma, double dt, std::vector<double>& d,
+                  std::vector<double>& v_p) const
+  {
+    d.resize(u.size());
+    v_p.resize(u.size());
+    for (std::size_t i = 0; i < u.size(); ++i)
+    {
+      d[i] = u[i] - beta * dt * dt * a[i];
+      v_p[i] = v[i] - gamma * dt * a[i];
+    }
+  }
 };
 
 /// The motion prescribed at some unknowns at every step (the nodes of a
