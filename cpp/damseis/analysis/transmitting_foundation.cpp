@@ -214,8 +214,8 @@ private:
 void TransmittingFoundation::check_time_step(dynamics::RayleighDamping damping,
                                              const dynamics::TimeScheme& scheme)
 {
-  // 2 % above the power iteration's estimate (it approaches the highest
-  // frequency from below); the band takes the mass-proportional damping
+  // 2 % above the band's highest frequency (a margin; it is converged to
+  // 1e-10); the band takes the mass-proportional damping
   // implicitly and its own stiffness damping b_E explicitly.
   _stable_dt = dynamics::explicit_stable_step(1.02 * _omega,
                                               {damping.a_mass, _b_explicit});

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <damseis/linalg/duplicate_matrix.h>
 #include <limits>
+#include <slepceps.h>
 #include <stdexcept>
 
 namespace damseis::dynamics
@@ -64,73 +65,100 @@ double explicit_stable_step(double omega_max, RayleighDamping damping)
   return lo;
 }
 
+namespace
+{
+/// The symmetric band operator S K_E S (S = mask / sqrt(D)) of
+/// highest_explicit_frequency, applied without forming it.
+struct BandOperator
+{
+  Mat K, K_implicit;
+  Vec scale, work, work_implicit;
+};
+
+PetscErrorCode band_operator_mult(Mat A, Vec x, Vec y)
+{
+  BandOperator* op = nullptr;
+  MatShellGetContext(A, &op);
+  VecPointwiseMult(op->work, x, op->scale);
+  MatMult(op->K, op->work, y);
+  MatMult(op->K_implicit, op->work, op->work_implicit);
+  VecAXPY(y, -1.0, op->work_implicit);
+  VecPointwiseMult(y, y, op->scale);
+  return 0;
+}
+} // namespace
+
 double highest_explicit_frequency(Mat K, Mat K_implicit, Vec lumped,
                                   const std::vector<PetscInt>& excluded)
 {
-  Vec x, y, y_implicit, mask;
-  VecDuplicate(lumped, &x);
-  VecDuplicate(lumped, &y);
-  VecDuplicate(lumped, &y_implicit);
-  VecDuplicate(lumped, &mask);
+  static bool slepc_ready = false;
+  if (!slepc_ready)
+  {
+    SlepcInitialize(nullptr, nullptr, nullptr, nullptr);
+    slepc_ready = true;
+  }
+  // S = 1 / sqrt(D) on the explicit unknowns (D > 0, not excluded), else 0:
+  // K_E x = lambda D x and S K_E S z = lambda z (x = S z) share lambda.
+  BandOperator op{K, K_implicit, nullptr, nullptr, nullptr};
+  VecDuplicate(lumped, &op.scale);
+  VecDuplicate(lumped, &op.work);
+  VecDuplicate(lumped, &op.work_implicit);
   PetscInt lo = 0, hi = 0;
-  VecGetOwnershipRange(x, &lo, &hi);
+  VecGetOwnershipRange(lumped, &lo, &hi);
+  double explicit_count = 0.0;
   {
     const double* d = nullptr;
-    double *xa = nullptr, *m = nullptr;
+    double* s = nullptr;
     VecGetArrayRead(lumped, &d);
-    VecGetArray(x, &xa);
-    VecGetArray(mask, &m);
-    for (PetscInt i = lo; i < hi; ++i)
-    {
-      m[i - lo] = d[i - lo] > 0.0 ? 1.0 : 0.0;
-      xa[i - lo] = m[i - lo] * (1.0 + 0.5 * std::sin(0.7 * i));
-    }
+    VecGetArray(op.scale, &s);
+    for (PetscInt i = 0; i < hi - lo; ++i)
+      s[i] = d[i] > 0.0 ? 1.0 / std::sqrt(d[i]) : 0.0;
     for (PetscInt row : excluded)
-      m[row - lo] = xa[row - lo] = 0.0;
-    VecRestoreArray(mask, &m);
-    VecRestoreArray(x, &xa);
+      s[row - lo] = 0.0;
+    for (PetscInt i = 0; i < hi - lo; ++i)
+      explicit_count += s[i] > 0.0 ? 1.0 : 0.0;
+    VecRestoreArray(op.scale, &s);
     VecRestoreArrayRead(lumped, &d);
   }
-  // D^-1 where D > 0.
-  Vec inverse;
-  VecDuplicate(lumped, &inverse);
-  VecCopy(lumped, inverse);
-  {
-    double* v = nullptr;
-    VecGetArray(inverse, &v);
-    PetscInt n = hi - lo;
-    for (PetscInt i = 0; i < n; ++i)
-      v[i] = v[i] > 0.0 ? 1.0 / v[i] : 0.0;
-    VecRestoreArray(inverse, &v);
-  }
+  MPI_Comm comm;
+  PetscObjectGetComm(reinterpret_cast<PetscObject>(lumped), &comm);
+  MPI_Allreduce(MPI_IN_PLACE, &explicit_count, 1, MPI_DOUBLE, MPI_SUM, comm);
   double lambda = 0.0;
-  for (int it = 0; it < 5000; ++it)
+  if (explicit_count > 0.0) // else no explicit unknown limits the step
   {
-    // lambda = x.K_E x / x.D x; x <- mask D^-1 K_E x, normalised.
-    MatMult(K, x, y);
-    MatMult(K_implicit, x, y_implicit);
-    VecAXPY(y, -1.0, y_implicit);
-    double xKx = 0.0, xDx = 0.0;
-    VecDot(x, y, &xKx);
-    VecPointwiseMult(y, y, inverse);
-    VecPointwiseMult(y, y, mask);
-    VecPointwiseMult(x, x, x); // x.D x (x is replaced below)
-    VecDot(x, lumped, &xDx);
-    if (!(xDx > 0.0)) // no explicit unknown: nothing limits the step
+    // The largest eigenvalue by Krylov-Schur to 1e-10: converged, so the
+    // same on any partition (a power iteration stopped at a small change
+    // depended on its start vector, i.e. on the dof numbering).
+    Mat A;
+    MatCreateShell(comm, hi - lo, hi - lo, PETSC_DETERMINE, PETSC_DETERMINE,
+                   &op, &A);
+    MatShellSetOperation(A, MATOP_MULT,
+                         reinterpret_cast<void (*)(void)>(band_operator_mult));
+    MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE);
+    EPS eps;
+    EPSCreate(comm, &eps);
+    EPSSetOperators(eps, A, nullptr);
+    EPSSetProblemType(eps, EPS_HEP);
+    EPSSetType(eps, EPSKRYLOVSCHUR);
+    EPSSetWhichEigenpairs(eps, EPS_LARGEST_REAL);
+    EPSSetDimensions(eps, 1, PETSC_DEFAULT, PETSC_DEFAULT);
+    EPSSetTolerances(eps, 1e-10, 10000);
+    EPSSolve(eps);
+    PetscInt converged = 0;
+    EPSGetConverged(eps, &converged);
+    if (converged < 1)
     {
-      lambda = 0.0;
-      break;
+      EPSDestroy(&eps);
+      MatDestroy(&A);
+      throw std::runtime_error(
+          "the explicit band's highest frequency did not converge");
     }
-    const double next = xKx / xDx;
-    double norm = 0.0;
-    VecNormalize(y, &norm);
-    VecCopy(y, x);
-    const bool converged = std::abs(next - lambda) <= 1e-7 * next;
-    lambda = next;
-    if (converged || norm == 0.0)
-      break;
+    double imaginary = 0.0;
+    EPSGetEigenvalue(eps, 0, &lambda, &imaginary);
+    EPSDestroy(&eps);
+    MatDestroy(&A);
   }
-  for (Vec* v : {&x, &y, &y_implicit, &mask, &inverse})
+  for (Vec* v : {&op.scale, &op.work, &op.work_implicit})
     VecDestroy(v);
   return std::sqrt(std::max(lambda, 0.0));
 }

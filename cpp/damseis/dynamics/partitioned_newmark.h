@@ -105,10 +105,8 @@ double explicit_stable_step(double omega_max, RayleighDamping damping);
 /// square root of the largest lambda of K_E x = lambda D x (K_E = K -
 /// K_implicit, the explicit elements' stiffness; D their lumped mass;
 /// unknowns with D = 0 or in `excluded`, global rows this rank owns, left
-/// out), by power
-/// iteration from a start that does not depend on the partition (converged
-/// to 1e-7 or 5000 iterations; the Rayleigh quotient approaches it from
-/// below); 0 without explicit unknowns. Collective.
+/// out), by SLEPc's Krylov-Schur on S K_E S (S = D^-1/2) to 1e-10, so the
+/// same on any partition; 0 without explicit unknowns. Collective.
 double highest_explicit_frequency(Mat K, Mat K_implicit, Vec lumped,
                                   const std::vector<PetscInt>& excluded);
 
