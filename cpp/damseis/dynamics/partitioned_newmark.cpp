@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <damseis/linalg/duplicate_matrix.h>
+#include <damseis/linalg/initialize_slepc.h>
 #include <limits>
 #include <slepceps.h>
 #include <stdexcept>
@@ -91,12 +92,7 @@ PetscErrorCode band_operator_mult(Mat A, Vec x, Vec y)
 double highest_explicit_frequency(Mat K, Mat K_implicit, Vec lumped,
                                   const std::vector<PetscInt>& excluded)
 {
-  static bool slepc_ready = false;
-  if (!slepc_ready)
-  {
-    SlepcInitialize(nullptr, nullptr, nullptr, nullptr);
-    slepc_ready = true;
-  }
+  linalg::initialize_slepc();
   // S = 1 / sqrt(D) on the explicit unknowns (D > 0, not excluded), else 0:
   // K_E x = lambda D x and S K_E S z = lambda z (x = S z) share lambda.
   BandOperator op{K, K_implicit, nullptr, nullptr, nullptr};
@@ -105,7 +101,6 @@ double highest_explicit_frequency(Mat K, Mat K_implicit, Vec lumped,
   VecDuplicate(lumped, &op.work_implicit);
   PetscInt lo = 0, hi = 0;
   VecGetOwnershipRange(lumped, &lo, &hi);
-  double explicit_count = 0.0;
   {
     const double* d = nullptr;
     double* s = nullptr;
@@ -115,16 +110,15 @@ double highest_explicit_frequency(Mat K, Mat K_implicit, Vec lumped,
       s[i] = d[i] > 0.0 ? 1.0 / std::sqrt(d[i]) : 0.0;
     for (PetscInt row : excluded)
       s[row - lo] = 0.0;
-    for (PetscInt i = 0; i < hi - lo; ++i)
-      explicit_count += s[i] > 0.0 ? 1.0 : 0.0;
     VecRestoreArray(op.scale, &s);
     VecRestoreArrayRead(lumped, &d);
   }
+  double largest_scale = 0.0;
+  VecMax(op.scale, nullptr, &largest_scale);
   MPI_Comm comm;
   PetscObjectGetComm(reinterpret_cast<PetscObject>(lumped), &comm);
-  MPI_Allreduce(MPI_IN_PLACE, &explicit_count, 1, MPI_DOUBLE, MPI_SUM, comm);
   double lambda = 0.0;
-  if (explicit_count > 0.0) // else no explicit unknown limits the step
+  if (largest_scale > 0.0) // else no explicit unknown limits the step
   {
     // The largest eigenvalue by Krylov-Schur to 1e-10: converged, so the
     // same on any partition (a power iteration stopped at a small change

@@ -1,6 +1,7 @@
 #include "modal.h"
 #include "direct_solver.h"
 #include "duplicate_matrix.h"
+#include "initialize_slepc.h"
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -79,12 +80,7 @@ Modes solve_modes(Mat K, Mat M, int count)
 std::vector<Modes> solve_modes(Mat K, const std::vector<Mat>& Ms, int count,
                                const std::function<void(KSP)>& with_K_factors)
 {
-  static bool slepc_ready = false;
-  if (!slepc_ready)
-  {
-    SlepcInitialize(nullptr, nullptr, nullptr, nullptr);
-    slepc_ready = true;
-  }
+  initialize_slepc();
   MPI_Comm comm;
   PetscObjectGetComm(reinterpret_cast<PetscObject>(K), &comm);
   EPS eps;
