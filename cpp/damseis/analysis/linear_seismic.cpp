@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cmath>
 #include <damseis/engine/linear_stepper.h>
+#include <damseis/engine/partitioned_stepper.h>
 #include <damseis/engine/time_history.h>
 #include <damseis/fem/facet_dofs.h>
 #include <damseis/fem/prolongation.h>
@@ -525,6 +526,17 @@ json LinearSeismicAnalysis::results()
     summary["foundation"]["free_field_load_seconds"] = _free_field_seconds;
     if (_mtf)
       summary["foundation"]["mtf"] = _mtf->summary();
+    if (const auto* p =
+            dynamic_cast<const engine::PartitionedStepper*>(_stepper.get()))
+    {
+      // Rank 0's clock: the partition's step split.
+      const dynamics::StepSeconds& t = p->step_seconds();
+      summary["foundation"]["step_seconds"] = {{"boundary", t.boundary},
+                                               {"solve", t.solve},
+                                               {"band", t.band},
+                                               {"rest", t.rest},
+                                               {"steps", t.steps}};
+    }
   }
   summary["wall_seconds"] = seconds_since(_wall_start);
   print_summary_line(_comm, summary);

@@ -1,6 +1,7 @@
 #include "partitioned_newmark.h"
 #include <Eigen/Dense>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <damseis/linalg/duplicate_matrix.h>
 #include <damseis/linalg/initialize_slepc.h>
@@ -12,6 +13,16 @@ namespace damseis::dynamics
 {
 namespace
 {
+using Clock = std::chrono::steady_clock;
+
+/// Adds the time since `t0` to `total` and restarts `t0`.
+void lap(Clock::time_point& t0, double& total)
+{
+  const Clock::time_point now = Clock::now();
+  total += std::chrono::duration<double>(now - t0).count();
+  t0 = now;
+}
+
 /// Spectral radius of one step of the partition's explicit group for one
 /// degree of freedom of circular frequency omega (unit mass): a_M
 /// implicit, b_K omega^2 explicit.
@@ -297,16 +308,20 @@ void PartitionedNewmark::set_prescribed_predictors()
 void PartitionedNewmark::step(Vec f_next)
 {
   const double dt = _dt, bdt2 = _beta * dt * dt, gdt = _gamma * dt;
+  Clock::time_point t0 = Clock::now();
   // The prescribed motion at n + 1 from steps n and n - 1.
   if (_prescribed)
     _prescribed->values(_n + 1, {_u, _v, _a}, prev(), _values);
+  lap(t0, _seconds.boundary);
   // The predictors; at the prescribed rows those the updates take to the
   // prescribed motion.
   VecWAXPY(_d_p, dt, _v, _u);
   VecAXPY(_d_p, (0.5 - _beta) * dt * dt, _a);
   VecWAXPY(_v_p, (1.0 - _gamma) * dt, _a, _v);
+  lap(t0, _seconds.rest);
   if (_prescribed)
     set_prescribed_predictors();
+  lap(t0, _seconds.boundary);
   VecCopy(_u, _u_prev);
   VecCopy(_v, _v_prev);
   VecCopy(_a, _a_prev);
@@ -319,12 +334,14 @@ void PartitionedNewmark::step(Vec f_next)
   MatMult(_K, _d_p, _Ku);
   VecWAXPY(_rhs, -_damping.a_mass, _Mv, f_next);
   VecAXPBYPCZ(_rhs, -_damping.b_stiffness, -1.0, 1.0, _Kv, _Ku);
+  lap(t0, _seconds.rest);
   if (_b_explicit > 0.0)
   {
     MatMult(_K, _v_p, _Kev);
     VecAXPY(_Kev, -1.0, _Kv);
     VecAXPY(_rhs, -_b_explicit, _Kev);
   }
+  lap(t0, _seconds.band);
   if (_prescribed)
   {
     const std::vector<PetscInt>& rows = _prescribed->rows();
@@ -345,7 +362,9 @@ void PartitionedNewmark::step(Vec f_next)
     VecAssemblyBegin(_rhs);
     VecAssemblyEnd(_rhs);
   }
+  lap(t0, _seconds.boundary);
   _solver->solve(_rhs, _a);
+  lap(t0, _seconds.solve);
 
   // The new state and its images: M a', K a' by products, the rest by the
   // same updates as the state.
@@ -354,13 +373,17 @@ void PartitionedNewmark::step(Vec f_next)
   MatMult(_M, _a, _Ma);
   MatMult(_K, _a, _w);
   VecAXPY(_Ku, bdt2, _w);
+  lap(t0, _seconds.rest);
   if (_b_explicit > 0.0)
     VecAXPY(_Kev, gdt, _w);
+  lap(t0, _seconds.band);
   MatMult(_K_implicit, _a, _w);
   VecAXPY(_Mv, gdt, _Ma);
   VecAXPY(_Kv, gdt, _w);
+  lap(t0, _seconds.rest);
   if (_b_explicit > 0.0)
     VecAXPY(_Kev, -gdt, _w);
+  lap(t0, _seconds.band);
   ++_n;
 
   // The energy balance: du times the mean load, damping force and
@@ -377,5 +400,7 @@ void PartitionedNewmark::step(Vec f_next)
   _energy.damping += 0.5 * (w_old[1] + w_new[1]);
   _energy.constraint_work += 0.5 * (w_old[2] + w_new[2]);
   update_energies();
+  lap(t0, _seconds.rest);
+  ++_seconds.steps;
 }
 } // namespace damseis::dynamics

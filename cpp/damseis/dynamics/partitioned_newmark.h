@@ -110,6 +110,26 @@ double explicit_stable_step(double omega_max, RayleighDamping damping);
 double highest_explicit_frequency(Mat K, Mat K_implicit, Vec lumped,
                                   const std::vector<PetscInt>& excluded);
 
+/// Where a partition's steps spent their time [s], summed over the steps
+/// (this rank's clock).
+struct StepSeconds
+{
+  /// The transmitting boundary: the formula's motion at the prescribed
+  /// rows, their predictors and the lifting of their coupled columns.
+  double boundary = 0.0;
+  /// The effective matrix's solve (the implicit group; the explicit
+  /// rows are diagonal in it).
+  double solve = 0.0;
+  /// The explicit band's own work: its stiffness damping's products
+  /// (b_E K_E v~ and its update). Its elastic forces ride in the product
+  /// K d~ of all elements, counted in `rest`.
+  double band = 0.0;
+  /// Everything else: predictors, the products K d~, M v~, K_I v~, the
+  /// new state's images, the energy balance.
+  double rest = 0.0;
+  int steps = 0;
+};
+
 class PartitionedNewmark
 {
 public:
@@ -143,6 +163,8 @@ public:
   void set_energy(const EnergyBalance& e) { _energy = e; }
   std::string solver_name() const { return _solver->name(); }
   double factor_seconds() const { return _solver->factor_seconds(); }
+  /// The steps' time, split by part.
+  const StepSeconds& step_seconds() const { return _seconds; }
 
 private:
   /// M x, K x and the reaction at the prescribed rows for the state.
@@ -174,5 +196,6 @@ private:
   Vec _cv = nullptr, _r = nullptr, _du = nullptr;
   Vec _mask = nullptr; ///< 1 at the prescribed rows
   EnergyBalance _energy;
+  StepSeconds _seconds;
 };
 } // namespace damseis::dynamics

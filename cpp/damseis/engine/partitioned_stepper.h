@@ -31,6 +31,11 @@ public:
   void resume(Vec f) override;
   std::string solver_name() const override { return _newmark.solver_name(); }
   double factor_seconds() const override { return _newmark.factor_seconds(); }
+  /// The steps' time split into boundary, solve, band and the rest.
+  const dynamics::StepSeconds& step_seconds() const
+  {
+    return _newmark.step_seconds();
+  }
   const dynamics::EnergyBalance* energy() const override
   {
     return &_newmark.energy();
