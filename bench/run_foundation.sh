@@ -67,9 +67,9 @@ else
 fi
 
 python3 - "$work" "$ranks" "$(git -C "$root" rev-parse --short HEAD)" \
-  "$boundary" "$steps" >"$report" <<'PY'
+  "$boundary" >"$report" <<'PY'
 import json, sys, datetime
-work, ranks, commit, boundary, steps = sys.argv[1:]
+work, ranks, commit, boundary = sys.argv[1:]
 def load(name):
     s = json.load(open(f"{work}/{name}/summary.json"))
     wall, mem = open(f"{work}/{name}.time").read().split()

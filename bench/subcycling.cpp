@@ -21,7 +21,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
-#include <vector>
+#include <utility>
 
 namespace
 {
